@@ -496,6 +496,46 @@ export function slingVelocity(pullX: number, pullY: number, fullPull: number): [
   return [(-pullX / length) * speed, (pullY / length) * speed];
 }
 
+/**
+ * How far a finger's pull is drawn to a throw that scores, px of pull (assistPull): on a phone the
+ * pull lengths that score span a few px (a 234 px full pull, about 1 % of the speed a px), finer than
+ * a thumb holds still while it lets go.
+ */
+export const PULL_ASSIST_PX = 14;
+
+/**
+ * The pull length a finger's pull of `length` px throws with, px: when a length within `reach` px
+ * of it scores (`scores`, a prediction of the throw at a pull length in the pull's direction), the
+ * middle of the run of scoring lengths through the nearest such one (followed at most 2 `reach` px
+ * either way), else `length` itself. So a pull that is close throws the surest basket of its run,
+ * and the lengths that score widen by about 2 `reach` px (a snap to the target, as the arc shows).
+ * Lengths are tried every `step` px (default 1) and never below 0.
+ * @throws RangeError unless length is finite and >= 0, reach is finite and >= 0 and step is finite and > 0.
+ */
+export function assistPull(length: number, scores: (length: number) => boolean, reach = PULL_ASSIST_PX, step = 1): number {
+  if (!(length >= 0 && Number.isFinite(length))) throw new RangeError(`assistPull: length must be finite and >= 0 px, got ${length}`);
+  if (!(reach >= 0 && Number.isFinite(reach))) throw new RangeError(`assistPull: reach must be finite and >= 0 px, got ${reach}`);
+  if (!(step > 0 && Number.isFinite(step))) throw new RangeError(`assistPull: step must be finite and > 0 px, got ${step}`);
+  let hit = Number.NaN;
+  // Outward from the pull: the nearest scoring length, the shorter first at a tie.
+  for (let d = 0; d <= reach + 1e-9; d += step) {
+    if (length - d >= 0 && scores(length - d)) {
+      hit = length - d;
+      break;
+    }
+    if (d > 0 && scores(length + d)) {
+      hit = length + d;
+      break;
+    }
+  }
+  if (Number.isNaN(hit)) return length;
+  let lo = hit,
+    hi = hit;
+  while (hi + step - hit <= 2 * reach + 1e-9 && scores(hi + step)) hi += step;
+  while (hit - (lo - step) <= 2 * reach + 1e-9 && lo - step >= 0 && scores(lo - step)) lo -= step;
+  return 0.5 * (lo + hi);
+}
+
 /** Options of `throwPath`: the scene's gravity and drag, the ball's mass, and the box it flies in. */
 export interface ThrowPathOptions {
   /** Gravity, m/s^2 down, >= 0. */

@@ -4,7 +4,8 @@
  *
  * The game on top (./hoop.ts): throw balls through the hoop for points in 60 s, each basket after the
  * first giving 3 s back (TIME_PER_BASKET); the hoop stays for 3 baskets (BASKETS_PER_HOOP, dots over
- * its board count them), so a throw that scored scores again, then moves; the clock starts with the
+ * its board count them), so a throw that scored scores again, then moves once no thrown ball is in
+ * flight (hoopAt follows round.spot then); the clock starts with the
  * first basket (a warm-up until then). The heap matters: a
  * pull that starts on one of its balls throws that ball, worth 2 (hoop.ts BALL_POINTS), and one of
  * them is gold (a halo, worth 5; a new one after it scores); a pull from empty space throws a new
@@ -40,8 +41,10 @@
  * the faster) and a ring bursts from the ball. A basket is celebrated: a swish
  * and a rising chord, confetti from the rim (kept inside the court), "+1" and the hoop glowing out (the
  * new one ringed when it moved), and the status row's score bumps. Knocks: the loudest few collisions a step (knocks.ts), so
- * a pile does not roar. When time is up, the Play-again button floats at the top of the box,
- * clear of the balls piled at its bottom.
+ * a pile does not roar. When time is up, the Play-again button floats over the stand under the box's
+ * floor, clear of the ramps at its top. Until a press, a ring pulses round a ball to throw
+ * (markThrowable; "drag me" over it until the round's first throw). On a touch screen a pull close
+ * to one that scores is drawn to it (currentThrow, hoop.ts assistPull; "on target" by the gauge).
  *
  * Looks: a court (a wall with panels over a wooden floor, the box framed in steel), wooden ramps,
  * plain coloured balls (no rotation marks, no trails unless asked for), a plain white backboard,
@@ -88,6 +91,7 @@ import {
 import { Graphics, Text } from 'pixi.js';
 import {
   addHoop,
+  assistPull,
   BACKBOARD,
   BALL_POINTS,
   type BallKind,
@@ -184,6 +188,13 @@ let crates: number[] = [];
 let round: HoopRound = createRound(roundSeconds);
 /** Entity ids of the hoop's backboard and front rim. */
 let hoopIds: number[] = [];
+/**
+ * The spot index where the hoop stands (its bodies, its drawing, the aim): the round's spot
+ * (round.spot), which it follows once no thrown ball is in flight (playHoop).
+ */
+let hoopAt = 0;
+/** When the hoop last moved to a new spot, world s (its ring closing in on the new rim: drawCelebration). */
+let hoopMovedAt = Number.NEGATIVE_INFINITY;
 /**
  * The balls in flight after a throw: whether each may still score (released below the rim, not up
  * through the net), its centre after the last step, m, what it is worth (BALL_POINTS), the world
@@ -282,7 +293,9 @@ function createWorld(): PhysicsWorld {
   ruleHint = '';
   lastThrown = 0;
   lastBasket = { x: 0, y: 0, time: -10, spot: 0, moved: false, score: 0, points: 0, kind: 'basketball', style: 'plain' };
-  hoopIds = addHoop(world, hoopSpots(TALL)[round.spot]!, params.restitution, params.friction);
+  hoopAt = round.spot;
+  hoopMovedAt = Number.NEGATIVE_INFINITY;
+  hoopIds = addHoop(world, hoopSpots(TALL)[hoopAt]!, params.restitution, params.friction);
   leaving = new Map();
   addSystem(world, 'integrate', keepLeavingFree);
   addSystem(world, 'collide', leaveFreely);
@@ -416,7 +429,7 @@ function leaveFreely(world: PhysicsWorld): void {
   const { box, segments } = layoutOf(TALL);
   const walls = [
     ...segments.map(([ax, ay, bx, by]) => [ax, ay, bx, by, SEGMENT_RADIUS] as const),
-    ...hoopSegments(hoopSpots(TALL)[round.spot]!).map(([ax, ay, bx, by]) => [ax, ay, bx, by, HOOP_RADIUS] as const),
+    ...hoopSegments(hoopSpots(TALL)[hoopAt]!).map(([ax, ay, bx, by]) => [ax, ay, bx, by, HOOP_RADIUS] as const),
   ];
   for (const [e, l] of leaving) {
     const s = slotOf(e);
@@ -504,7 +517,7 @@ function liftSpot(e: number): [number, number] | null {
   const { box, segments } = layoutOf(TALL);
   const walls = [
     ...segments.map(([ax, ay, bx, by]) => [ax, ay, bx, by, SEGMENT_RADIUS] as const),
-    ...hoopSegments(hoopSpots(TALL)[round.spot]!).map(([ax, ay, bx, by]) => [ax, ay, bx, by, HOOP_RADIUS] as const),
+    ...hoopSegments(hoopSpots(TALL)[hoopAt]!).map(([ax, ay, bx, by]) => [ax, ay, bx, by, HOOP_RADIUS] as const),
   ];
   // The column over the ball: the balls it would meet going straight up, and the heights (centre, m)
   // at which it would rest on each of them.
@@ -660,7 +673,7 @@ const hoopRandom = (): number => hoopOrder.next();
 function playHoop(world: PhysicsWorld): void {
   const P = world.components.Position;
   const spots = hoopSpots(TALL);
-  let opening = hoopOpening(spots[round.spot]!);
+  const opening = hoopOpening(spots[hoopAt]!);
   for (const [e, b] of flights) {
     if (!handles.balls.includes(e)) {
       flights.delete(e);
@@ -678,11 +691,14 @@ function playHoop(world: PhysicsWorld): void {
     const wasSpot = round.spot;
     const style: ShotStyle = b.trick ? 'trick' : b.touched ? 'plain' : 'swish';
     if (b.scores && crossing === -1 && roundBasket(round, spots.length, b.kind, hoopRandom, style)) {
+      // A basket in the hoop still standing where the round's last spot was (waiting for this ball):
+      // it is no basket of the next hoop's, which starts its count from none.
+      if (hoopAt !== wasSpot && !round.lastMoved) round.atHoop = 0;
       lastBasket = {
         x: opening.minX + 0.5 * (opening.maxX - opening.minX),
         y: opening.y,
         time: world.time,
-        spot: wasSpot,
+        spot: hoopAt,
         moved: round.spot !== wasSpot,
         score: round.score,
         points: round.lastPoints,
@@ -693,12 +709,6 @@ function playHoop(world: PhysicsWorld): void {
       basketballs.delete(e);
       removeBall(world, handles, e);
       if (e === goldBall) pickGold(world);
-      // The hoop stays for BASKETS_PER_HOOP baskets (hoop.ts roundBasket), then moves.
-      if (round.spot !== wasSpot) {
-        removeHoop(world, hoopIds);
-        hoopIds = addHoop(world, spots[round.spot]!, handles.params.restitution, handles.params.friction);
-        opening = hoopOpening(spots[round.spot]!);
-      }
       cheer(round.score, b.kind);
       keepBest();
       continue;
@@ -720,6 +730,14 @@ function playHoop(world: PhysicsWorld): void {
         setTimeout(() => sound.chime(220, 0.35), 110);
       }
     }
+  }
+  // The hoop stays for BASKETS_PER_HOOP baskets (hoop.ts roundBasket), then moves, once no thrown
+  // ball is in flight: a ball thrown at it lands or misses where it was aimed.
+  if (hoopAt !== round.spot && flights.size === 0) {
+    removeHoop(world, hoopIds);
+    hoopAt = round.spot;
+    hoopIds = addHoop(world, spots[hoopAt]!, handles.params.restitution, handles.params.friction);
+    hoopMovedAt = world.time;
   }
   if (lastThrowPending(world.dt)) round.timeLeft = Math.max(0, round.timeLeft - world.dt);
   else if (roundTick(round, world.dt)) {
@@ -856,7 +874,7 @@ function keepBest(): void {
 
 /** The net stops the balls it would stop (hoop.ts netContact): every ball, after each step. */
 function applyNet(world: PhysicsWorld): void {
-  const spot = hoopSpots(TALL)[round.spot]!;
+  const spot = hoopSpots(TALL)[hoopAt]!;
   const c = world.components,
     P = c.Position,
     O = c.PreviousPosition,
@@ -1191,8 +1209,63 @@ function endAim(): void {
  * The throw the pointer would make now: start (m), velocity (m/s) of the slingshot, and the ball's
  * radius (m) and mass (kg): from the pressed ball's centre when the press began on a ball (that ball
  * is thrown), lifted to the top of the heap over it if it is buried (liftSpot), else from the press's start spot (pressSpot: a new basketball).
+ * A finger's pull (not a mouse's) within PULL_ASSIST_PX of a length that scores throws the middle of
+ * that run of lengths (hoop.ts assistPull): a px of pull is about 1 % of the speed on a phone.
  */
 function currentThrow(): { x: number; y: number; vx: number; vy: number; radius: number; mass: number } {
+  const t = pulledThrow();
+  assisting = false;
+  const pdx = lastX - startX,
+    pdy = lastY - startY,
+    len = Math.hypot(pdx, pdy);
+  // A finger's pull: drawn to the middle of the nearest run of pull lengths that score (hoop.ts
+  // assistPull), worked out once for each pull, as the arc and the release both ask for it.
+  if (!pressFinger || !dragged || len === 0 || len >= fullPullNow || inCancelZone() || refused()) return t;
+  const key = `${startX},${startY},${lastX},${lastY},${pressBall},${hoopAt}`;
+  if (assistMemo.key !== key) {
+    const scores = (l: number): boolean => {
+      if (l > fullPullNow) return false;
+      const [vx, vy] = slingVelocity((pdx * l) / len, (pdy * l) / len, fullPullNow);
+      return scoresClean({ ...t, vx, vy }, pressBall);
+    };
+    const length = assistPull(len, scores);
+    assistMemo = { key, length, on: length !== len || scores(len) };
+  }
+  if (!assistMemo.on) return t;
+  assisting = true;
+  const [vx, vy] = slingVelocity((pdx * assistMemo.length) / len, (pdy * assistMemo.length) / len, fullPullNow);
+  return { ...t, vx, vy };
+}
+
+/** Whether the last currentThrow was drawn to a basket by the finger's assist (its label says so: drawPointer). */
+let assisting = false;
+/** The current finger pull's assisted length, px, for the pull and press in `key`, and whether it is on a basket (`on`). */
+let assistMemo = { key: '', length: 0, on: false };
+
+/**
+ * Whether throw `t` of ball `thrown` (0: a new basketball) goes down through the hoop's opening
+ * before it touches anything: its aiming flight (arcOf, no bounces, a point each world step) crosses
+ * the rim's line downwards between the front rim and the board, from below the shot line (mayScore).
+ */
+function scoresClean(t: { x: number; y: number; vx: number; vy: number; radius: number; mass: number }, thrown: number): boolean {
+  const spot = hoopSpots(TALL)[hoopAt]!;
+  if (!mayScore(spot, t.y)) return false;
+  // Followed until its drag-free flight is 1 m under the rim on the way down, and 0.3 s more (drag
+  // only lowers and shortens it); one that never reaches the rim's height drag-free never scores.
+  const g = handles.params.gravity,
+    rise = t.vy * t.vy + 2 * g * (t.y - spot.y);
+  if (g > 0 && rise < 0) return false;
+  const seconds = g > 0 ? Math.min(FLIGHT_SECONDS, (t.vy + Math.sqrt(rise + 2 * g)) / g + 0.3) : FLIGHT_SECONDS;
+  const path = arcOf(t, thrown, seconds, 0, 0, shell.world.dt);
+  const o = hoopOpening(spot);
+  // The last point is the first touch when the flight ended early: a crossing into it does not count.
+  for (let i = 1; i < path.length / 2 - 1; i++)
+    if (hoopCrossing(o, path[2 * i - 2]!, path[2 * i - 1]!, path[2 * i]!, path[2 * i + 1]!) === -1) return true;
+  return false;
+}
+
+/** The throw the pointer's pull makes as it is (currentThrow before a finger's assist). */
+function pulledThrow(): { x: number; y: number; vx: number; vy: number; radius: number; mass: number } {
   const [vx, vy] = slingVelocity(lastX - startX, lastY - startY, fullPullNow);
   if (pressBall !== 0 && handles.balls.includes(pressBall)) {
     const c = shell.world.components,
@@ -1220,7 +1293,7 @@ const HOOP_TAP_REACH = 0.3;
  * tip to the backboard, from the net's foot to the board's top.
  */
 function onHoop(x: number, y: number): boolean {
-  const spot = hoopSpots(TALL)[round.spot]!;
+  const spot = hoopSpots(TALL)[hoopAt]!;
   const board = spot.x + spot.side * (HOOP_HALF_WIDTH + HOOP_RADIUS),
     tip = spot.x - spot.side * (HOOP_HALF_WIDTH + HOOP_RADIUS + FRONT_RIM_LENGTH);
   return (
@@ -1248,7 +1321,7 @@ function startSpot(x: number, y: number): [number, number] | null {
   if (!(x >= box.min[0] && x <= box.max[0] && y >= box.min[1] && y <= box.max[1])) return null;
   const walls = [
     ...segments.map(([ax, ay, bx, by]) => [ax, ay, bx, by, SEGMENT_RADIUS] as const),
-    ...hoopSegments(hoopSpots(TALL)[round.spot]!).map(([ax, ay, bx, by]) => [ax, ay, bx, by, HOOP_RADIUS] as const),
+    ...hoopSegments(hoopSpots(TALL)[hoopAt]!).map(([ax, ay, bx, by]) => [ax, ay, bx, by, HOOP_RADIUS] as const),
   ];
   const closest = (px: number, py: number, [ax, ay, bx, by]: readonly number[]): [number, number] => {
     const ex = bx! - ax!,
@@ -1557,7 +1630,7 @@ function launch(e: number, thrown: boolean): void {
   const P = shell.world.components.Position;
   const bx = P.x[slotOf(e)]!,
     by = P.y[slotOf(e)]!;
-  const scores = mayScore(hoopSpots(TALL)[round.spot]!, by);
+  const scores = mayScore(hoopSpots(TALL)[hoopAt]!, by);
   if (basketballs.has(e)) renderer.setColor(e, scores ? PLAYER_COLOR : HIGH_COLOR);
   // A drop falls: it cannot go down through the hoop from below the rim, nor be a miss.
   if (thrown) flights.set(e, { scores, x: bx, y: by, kind: kindOf(e), at: shell.world.time, touched: false, trick: false });
@@ -1596,7 +1669,7 @@ function arcSeconds(y: number, vy: number): number {
   const g = handles.params.gravity;
   if (!(g > 0)) return aimSeconds();
   const apex = vy > 0 ? vy / g : 0;
-  const drop = y + (vy > 0 ? (vy * vy) / (2 * g) : 0) - (hoopSpots(TALL)[round.spot]!.y + ARC_END_ABOVE_RIM);
+  const drop = y + (vy > 0 ? (vy * vy) / (2 * g) : 0) - (hoopSpots(TALL)[hoopAt]!.y + ARC_END_ABOVE_RIM);
   const down = drop > 0 ? apex + Math.sqrt((2 * drop) / g) : apex + APEX_MORE;
   return Math.min(FLIGHT_SECONDS, Math.max(aimSeconds(), down));
 }
@@ -1656,9 +1729,10 @@ function arcOf(
   seconds = FLIGHT_SECONDS,
   bounces = AIM_BOUNCES,
   ceilingBounces = 0,
+  every?: number,
 ): number[] {
   const p = handles.params;
-  const spot = hoopSpots(TALL)[round.spot]!;
+  const spot = hoopSpots(TALL)[hoopAt]!;
   const walls = [
     ...layoutOf(TALL).segments.map(([ax, ay, bx, by]) => [ax, ay, bx, by, SEGMENT_RADIUS] as const),
     ...hoopSegments(spot).map(([ax, ay, bx, by]) => [ax, ay, bx, by, HOOP_RADIUS] as const),
@@ -1671,6 +1745,7 @@ function arcOf(
     radius: t.radius,
     box: layoutOf(TALL).box,
     seconds,
+    ...(every === undefined ? {} : { every }),
     bounces,
     ceilingBounces,
     restitution: p.restitution,
@@ -1749,7 +1824,7 @@ function arcCut(
   for (const [ax, ay, bx, by] of layoutOf(TALL).segments)
     if (distanceToSegment(ex, ey, ax, ay, bx, by) < t.radius + SEGMENT_RADIUS + CUT_REACH)
       return { kind: 'ramp', x: ex, y: ey, soon: false };
-  const spot = hoopSpots(TALL)[round.spot]!;
+  const spot = hoopSpots(TALL)[hoopAt]!;
   // hoopSegments: the backboard first, then the front rim.
   for (const [i, [ax, ay, bx, by]] of hoopSegments(spot).entries())
     if (distanceToSegment(ex, ey, ax, ay, bx, by) < t.radius + HOOP_RADIUS + CUT_REACH)
@@ -1798,6 +1873,69 @@ holdLabel.visible = false;
 app.stage.addChild(holdLabel);
 app.stage.addChild(cutLabel);
 
+/** The "drag me" label over the marked ball (markThrowable) until the round's first throw. */
+const markLabel = new Text({
+  text: 'drag me',
+  style: { fontFamily: 'system-ui, sans-serif', fontSize: 15, fontWeight: '700', fill: 0xffd166, stroke: { color: 0x0b0f16, width: 4 } },
+});
+markLabel.anchor.set(0.5, 1);
+markLabel.visible = false;
+app.stage.addChild(markLabel);
+/** How often the marked ball is chosen again, ms (markThrowable): the heap settles slowly, and liftSpot is not free. */
+const MARK_EVERY_MS = 400;
+/** The ball marked as the one to throw (0: none) and when it was chosen, performance.now() ms. */
+let marked = { ball: 0, at: Number.NEGATIVE_INFINITY };
+
+/**
+ * The ball to mark as throwable: of the heap's balls at rest (slower than COLUMN_REST_SPEED, not in
+ * flight or fading), released below the shot line and not buried (liftSpot leaves it where it lies),
+ * the one whose top is highest, a metre of distance sideways from the hoop (up to 5 m) counting as
+ * 0.3 m of height (a throw from under the hoop is a hard one). 0 when there is none.
+ */
+function throwableBall(): number {
+  const c = shell.world.components,
+    P = c.Position,
+    V = c.Velocity,
+    R = c.Ball.radius;
+  const spot = hoopSpots(TALL)[hoopAt]!;
+  const ranked: [number, number][] = [];
+  for (const e of handles.balls) {
+    if (flights.has(e) || fading.has(e)) continue;
+    const s = slotOf(e);
+    if (V.x[s]! ** 2 + V.y[s]! ** 2 > COLUMN_REST_SPEED ** 2 || !mayScore(spot, P.y[s]!)) continue;
+    ranked.push([e, P.y[s]! + R[s]! + 0.3 * Math.min(5, Math.abs(P.x[s]! - spot.x))]);
+  }
+  ranked.sort((a, b) => b[1] - a[1]);
+  // The best few only: a buried one is passed over (liftSpot is the costly part).
+  for (const [e] of ranked.slice(0, 6)) if (!buried(e)) return e;
+  return 0;
+}
+
+/**
+ * Marks the ball to throw when no press is under way: a ring pulsing round it (once a second) and,
+ * until the round's first throw, "drag me" over it, so a newcomer sees what to pull before trying.
+ */
+function markThrowable(): void {
+  markLabel.visible = false;
+  if (pointerId !== -1 || drag.joint !== 0 || round.phase === 'over' || shell.paused) return;
+  const now = performance.now();
+  if (now - marked.at > MARK_EVERY_MS || !handles.balls.includes(marked.ball) || flights.has(marked.ball))
+    marked = { ball: throwableBall(), at: now };
+  if (marked.ball === 0) return;
+  const cam = renderer.camera,
+    s = slotOf(marked.ball),
+    P = shell.world.components.Position;
+  const x = cam.toScreenX(P.x[s]!),
+    y = cam.toScreenY(P.y[s]!),
+    r = cam.toScreenLength(shell.world.components.Ball.radius[s]!);
+  const pulse = 0.5 + 0.5 * Math.sin((2 * Math.PI * now) / 1000);
+  overlay.circle(x, y, r + 5 + 4 * pulse).stroke({ width: 3, color: 0xffffff, alpha: 0.5 + 0.45 * pulse });
+  if (round.shots === 0 && round.phase === 'ready') {
+    placeInside(markLabel, x, y - r - 12 - 4 * pulse);
+    markLabel.visible = true;
+  }
+}
+
 /** Shows `text` on the hold label centred at x, its bottom at y (CSS px on the canvas), kept inside the canvas. */
 function showHoldLabel(text: string, x: number, y: number): void {
   if (holdLabel.text !== text) holdLabel.text = text;
@@ -1818,8 +1956,20 @@ function placeInside(label: Text, x: number, y: number): void {
  * in red with no room there), the slingshot's band to the pointer, a power gauge round the ball with
  * its percentage, and a dotted arc of where the ball will fly, its dots fading along it.
  */
+/** A dashed white line on the pointer overlay from `gap` px off (x0, y0) to 4 px short of (x1, y1), CSS px: a ball tied to its press under the floor. */
+function dashTo(x0: number, y0: number, gap: number, x1: number, y1: number): void {
+  const len = Math.hypot(x1 - x0, y1 - y0);
+  for (let d = gap; d < len - 4; d += 10) {
+    const f = d / len,
+      g = Math.min(len - 4, d + 5) / len;
+    overlay.moveTo(x0 + f * (x1 - x0), y0 + f * (y1 - y0)).lineTo(x0 + g * (x1 - x0), y0 + g * (y1 - y0));
+  }
+  overlay.stroke({ width: 2, color: 0xffffff, alpha: 0.6 });
+}
+
 function drawPointer(): void {
   overlay.clear();
+  markLabel.visible = false;
   liftedShown = 0;
   holdLabel.visible = false;
   cutLabel.visible = false;
@@ -1833,6 +1983,7 @@ function drawPointer(): void {
       .stroke({ width: 3 + 3 * releaseFx.power, color: powerColor(releaseFx.power), alpha: 0.9 * (1 - age) });
   }
   if (pointerId === -1) {
+    markThrowable();
     // A throw refused as blocked: say why where it would have started, for a moment.
     if (performance.now() - blockedAt < HOOP_TAP_SHOWN)
       showHoldLabel(BLOCKED_WORDS, cam.toScreenX(blockedSpot[0]), cam.toScreenY(blockedSpot[1]) - cam.toScreenLength(PLAYER_RADIUS) - 8);
@@ -1854,13 +2005,7 @@ function drawPointer(): void {
       br = cam.toScreenLength(t.radius);
     if (pressBall === 0) overlay.circle(bx, by, br).fill({ color: PLAYER_COLOR, alpha: 0.85 });
     overlay.circle(bx, by, br + 4).stroke({ width: 3, color: 0xffffff, alpha: 0.9 });
-    const len = Math.hypot(startX - bx, startY - by);
-    for (let d = br + 6; d < len - 4; d += 10) {
-      const f = d / len,
-        g = Math.min(len - 4, d + 5) / len;
-      overlay.moveTo(bx + f * (startX - bx), by + f * (startY - by)).lineTo(bx + g * (startX - bx), by + g * (startY - by));
-    }
-    overlay.stroke({ width: 2, color: 0xffffff, alpha: 0.6 });
+    dashTo(bx, by, br + 6, startX, startY);
     overlay.circle(startX, startY, 6).fill({ color: 0xffffff, alpha: 0.7 });
     showHoldLabel('pull back to throw this ball', bx, by - br - 10);
     return;
@@ -1939,7 +2084,7 @@ function drawPointer(): void {
     oy = cam.toScreenY(t.y),
     or = cam.toScreenLength(t.radius);
   // A grey (too high) throw's dots are drawn lighter than its ball: grey dots are lost on the wall.
-  const thrownColor = mayScore(hoopSpots(TALL)[round.spot]!, t.y) ? PLAYER_COLOR : HIGH_AIM_COLOR;
+  const thrownColor = mayScore(hoopSpots(TALL)[hoopAt]!, t.y) ? PLAYER_COLOR : HIGH_AIM_COLOR;
   // The band: thicker and warmer the harder the pull (white, gold, red at full power).
   const power = Math.min(1, Math.hypot(t.vx, t.vy) / MAX_THROW_SPEED);
   // It is as long as the pull that counts: a pull past the full pull stops at it with a bar across
@@ -1950,11 +2095,16 @@ function drawPointer(): void {
     plen = Math.hypot(pdx, pdy);
   const capped = plen > fullPullNow;
   const k = capped ? fullPullNow / plen : 1;
-  const bx = ox + k * pdx,
-    by = oy + k * pdy;
+  // A pull from under the floor: the band runs from the press to the finger, in the room under the
+  // floor, and a dashed line ties it up to the ball it throws (a band from the ball ran down through
+  // the heap and the floor).
+  const [ax, ay] = pressStand ? [startX, startY] : [ox, oy];
+  if (pressStand) dashTo(ox, oy, or + 6, startX, startY);
+  const bx = ax + k * pdx,
+    by = ay + k * pdy;
   if (Math.hypot(lastX - bx, lastY - by) > 4) overlay.moveTo(bx, by).lineTo(lastX, lastY).stroke({ width: 2, color: 0xffffff, alpha: 0.3 });
   overlay
-    .moveTo(ox, oy)
+    .moveTo(ax, ay)
     .lineTo(bx, by)
     .stroke({ width: 3 + 3 * power, color: powerColor(power), alpha: 0.75 });
   overlay.circle(bx, by, 5 + 2 * power).fill({ color: powerColor(power), alpha: 0.7 });
@@ -2002,7 +2152,7 @@ function drawPointer(): void {
   // cross is small and under the gauge (a heap ball thrown into its neighbour rolled off along the
   // heap), and letting go throws nothing (release).
   const soon = cut?.soon === true;
-  let label = `${soon ? 'blocked · ' : ''}power ${Math.round(100 * power)}%${capped ? ' (max)' : ''}`;
+  let label = `${soon ? 'blocked · ' : ''}power ${Math.round(100 * power)}%${capped ? ' (max)' : ''}${assisting ? ' · on target' : ''}`;
   if (pressed !== 0) {
     const points = BALL_POINTS[kindOf(pressed)];
     const lifted = lift !== null && (lift[0] !== P.x[slotOf(pressed)] || lift[1] !== P.y[slotOf(pressed)]);
@@ -2038,7 +2188,7 @@ function drawPointer(): void {
       const fill = cut.kind === 'board' ? CUT_FILL.board : CUT_FILL.block;
       if (cutLabel.style.fill !== fill) cutLabel.style.fill = fill;
       // Off the board, the label sits on the court's side of the mark, clear of the board drawn over it.
-      const away = cut.kind === 'board' ? -hoopSpots(TALL)[round.spot]!.side * (cutLabel.width / 2) : 0;
+      const away = cut.kind === 'board' ? -hoopSpots(TALL)[hoopAt]!.side * (cutLabel.width / 2) : 0;
       placeInside(cutLabel, sx + away, sy - k - 4);
       cutLabel.visible = true;
     }
@@ -2128,7 +2278,7 @@ let lastThrown = 0;
 function drawHoop(): void {
   const cam = renderer.camera;
   const world = shell.world;
-  const spot = hoopSpots(TALL)[round.spot]!;
+  const spot = hoopSpots(TALL)[hoopAt]!;
   const o = hoopOpening(spot);
   const { box } = layoutOf(TALL);
   hoopLayer.clear();
@@ -2196,6 +2346,16 @@ function drawHoop(): void {
  */
 function drawCelebration(age: number): void {
   confetti.clear();
+  // A hoop that moved: a ring closing in on the new rim over its first second there, so the eye finds
+  // it (0.3 s after the basket when it moves at once; once the last ball in flight is down otherwise).
+  const moved = shell.world.time - Math.max(hoopMovedAt, lastBasket.time + 0.3);
+  if (hoopMovedAt >= lastBasket.time && moved > 0 && moved < 1) {
+    const cam = renderer.camera;
+    const o = hoopOpening(hoopSpots(TALL)[hoopAt]!);
+    confetti
+      .circle(cam.toScreenX(0.5 * (o.minX + o.maxX)), cam.toScreenY(o.y), cam.toScreenLength(3.2 - 1.8 * moved))
+      .stroke({ width: 3, color: 0xffffff, alpha: 0.8 * (1 - moved) });
+  }
   const on = age >= 0 && age < CELEBRATE_SECONDS;
   popText.visible = praiseText.visible = on;
   if (!on) return;
@@ -2257,14 +2417,6 @@ function drawCelebration(age: number): void {
         sy - hw * sin + hh * cos,
       ])
       .fill({ color: c.color, alpha: fade });
-  }
-  // A hoop that moved: a ring closing in on the new rim between 0.3 s and 1.3 s, so the eye finds it.
-  if (lastBasket.moved && age > 0.3 && age < 1.3) {
-    const k = (age - 0.3) / 1;
-    const o = hoopOpening(hoopSpots(TALL)[round.spot]!);
-    confetti
-      .circle(cam.toScreenX(0.5 * (o.minX + o.maxX)), cam.toScreenY(o.y), cam.toScreenLength(3.2 - 1.8 * k))
-      .stroke({ width: 3, color: 0xffffff, alpha: 0.8 * (1 - k) });
   }
   // "+1" and the praise rising over the rim, fading over the last 40 %.
   const rise = 30 + 50 * Math.min(1, 2 * f);
@@ -2467,7 +2619,8 @@ if (touchHint) {
 /** Keeps the touch hint card in the middle of the stand under the floor, or its foot 4 px over the canvas's foot if the stand is lower than the card (while it is on the page). */
 function placeTouchHint(): void {
   const shown = !!touchHint?.isConnected && !!touchHint.offsetParent;
-  standLabel.visible = standRoom && !shown;
+  // Not under the Play-again button when the round is over (it floats over the stand then).
+  standLabel.visible = standRoom && !shown && round.phase !== 'over';
   if (!shown) return;
   const top = canvas.getBoundingClientRect().top - touchHint!.offsetParent!.getBoundingClientRect().top;
   const h = touchHint!.offsetHeight,
@@ -2511,8 +2664,11 @@ function anchorCourt(): void {
   cam.fit({ minX: box.min[0], minY, maxX: box.max[0], maxY: box.max[1] });
 }
 
-/** The big Play-again button when time is up: over the top of the box, clear of the balls piled at its bottom. */
-const setAction = createActionButton('Play again ▶', () => shell.reset(), { at: 'top' });
+/**
+ * The big Play-again button when time is up: over the bottom of the stage, on the stand under the
+ * box's floor, clear of the ramps and the hoop at the top of the box and of the end card over its middle.
+ */
+const setAction = createActionButton('Play again ▶', () => shell.reset());
 
 // The numbers line bumps (grows and turns gold for a moment) when a basket scores. Each line of the
 // row is one line, whatever its text (a long one is cut with an ellipsis; the phone's texts are short
@@ -2568,12 +2724,14 @@ function updateStatus(): void {
       : lastCall.ball !== 0
         ? 'Last throw…'
         : cheering
-          ? `${praiseFor(lastBasket)} +${lastBasket.points} · ${lastBasket.score === 1 ? 'the clock runs' : `+${TIME_PER_BASKET} s`}${lastBasket.moved ? ' · the hoop moved' : ''}`
+          ? `${praiseFor(lastBasket)} +${lastBasket.points} · ${lastBasket.score === 1 ? 'the clock runs' : `+${TIME_PER_BASKET} s`}${lastBasket.moved ? (hoopAt !== round.spot ? ' · the hoop moves next' : ' · the hoop moved') : ''}`
           : round.phase === 'ready'
             ? `Score once to start the ${round.seconds} s clock`
             : round.streak > 0
               ? `${round.streak} in a row: the next basket scores ×${streakMultiplier(round.streak)}`
-              : `${plural(round.perHoop - round.atHoop, 'basket', 'baskets')} here, then the hoop moves`;
+              : hoopAt !== round.spot
+                ? 'The hoop moves once your ball is down'
+                : `${plural(round.perHoop - round.atHoop, 'basket', 'baskets')} here, then the hoop moves`;
   const numbers = `Points ${round.points} · ×${streakMultiplier(round.streak)} · Time ${secs} s · Best ${best}`;
   // The last throw's rule break (ruleHint) stays until the next throw; otherwise, while playing, the
   // hint takes turns (TEACH_MS each, held while a press is down so it can be read while aiming)
@@ -2663,7 +2821,7 @@ function drawCountdown(): void {
   const cam = renderer.camera;
   const { box } = layoutOf(TALL);
   // Over the half of the box away from the hoop, so it never covers the hoop being aimed at.
-  const o = hoopOpening(hoopSpots(TALL)[round.spot]!);
+  const o = hoopOpening(hoopSpots(TALL)[hoopAt]!);
   const mid = 0.5 * (box.min[0] + box.max[0]),
     across = 0.5 * (o.minX + o.maxX) > mid ? 0.3 : 0.7;
   const x = box.min[0] + across * (box.max[0] - box.min[0]);
@@ -2808,8 +2966,10 @@ shell.expose({
    * (false: buried with no room above it).
    */
   throwBall: (eid: number, vx: number, vy: number): boolean => throwBall(eid, vx, vy),
-  /** The hoop's opening now: rim height y and the x range, m. */
-  hoop: () => hoopOpening(hoopSpots(TALL)[round.spot]!),
+  /** The ball marked as the one to throw (0: none; markThrowable) and the label over it ('' when none shows, 'drag me' before the round's first throw). */
+  throwable: (): { ball: number; label: string } => ({ ball: marked.ball, label: markLabel.visible ? markLabel.text : '' }),
+  /** The hoop's opening where it stands now (it follows the round's spot once no thrown ball is in flight): rim height y and the x range, m. */
+  hoop: () => hoopOpening(hoopSpots(TALL)[hoopAt]!),
   /** A player's ball at (x, y) m with velocity (vx, vy) m/s, as a throw releases it (counts for the hoop). @returns its id. */
   shoot: (x: number, y: number, vx = 0, vy = 0): number => shoot(x, y, vx, vy),
   /**

@@ -2,7 +2,7 @@
  * Bouncing balls in headless Chromium: the hoop game (the goal shown above the box at once, a throw through
  * the hoop scores, is celebrated (the row says so and its score bumps, "+1" and praise over the hoop)
  * and is kept as the best, a ball thrown up from under the hoop stops at its net, the aiming arc
- * bounces off a wall, time up offers Play again over the top of the box; on a phone a tap leaves the
+ * bounces off a wall, time up offers Play again under the box's floor; on a phone a tap leaves the
  * clock waiting and a pull shows the aiming arc, throws and starts the clock), the court's looks (no
  * trails, no plain physics walls), and the sandbox: a click (which starts no clock) and a slingshot
  * pull spawn balls (a pull that starts on a ball throws that ball, at once or after half a second held
@@ -738,9 +738,11 @@ describe('bouncing balls: the hoop game', () => {
     await g.press('p');
     await g.frames(2);
     const again = g.page.getByRole('button', { name: 'Play again ▶' });
-    // Over the top of the box (above 8 m of its 10), clear of the balls piled at its bottom.
+    // On the stand under the box's floor, inside the page: clear of the top ramps (a stranger found
+    // it over the top one when it floated over the top of the box) and of the balls in the box.
     const button = (await again.boundingBox())!;
-    expect(button.y + button.height).toBeLessThan((await g.worldToPage(0, 8)).y);
+    expect(button.y).toBeGreaterThan((await g.worldToPage(0, 0)).y);
+    expect(button.y + button.height).toBeLessThanOrEqual(800);
     await again.click();
     await g.waitFor(() => (window.game as unknown as HoopGame).round().phase === 'ready', null);
     expect(await g.page.evaluate(() => (window.game as unknown as HoopGame).best())).toBe(2);
@@ -969,6 +971,114 @@ describe('bouncing balls: the hoop game', () => {
       expect(g.errors).toEqual([]);
     });
 
+    it('desktop 1280 x 800: after the third basket the hoop waits for a ball still in flight to come down, then moves', async () => {
+      const g = page();
+      const r = await g.page.evaluate(() => {
+        const game = window.game as unknown as HoopGame & {
+          paused: boolean;
+          reset(): void;
+          step(): void;
+          remove(id: number): void;
+          positions(): number[];
+          ballIds(): number[];
+          world: { time: number };
+        };
+        game.reset();
+        game.paused = true;
+        for (const id of game.ballIds()) game.remove(id);
+        const first = game.hoop();
+        const x = 0.5 * (first.minX + first.maxX),
+          T = 1.3;
+        const basket = () => game.shoot(8, 4, (x - 8) / T, (first.y - 4 + 0.5 * 9.81 * T * T) / T);
+        for (let k = 0; k < 2; k++) {
+          const before = game.round().score;
+          basket();
+          while (game.round().score === before) game.step();
+          for (let i = 0; i < 30; i++) game.step();
+        }
+        // The third basket, and a lob straight up from (3, 2) m at 12 m/s thrown 0.4 s after it: up
+        // for 1.2 s, it comes back below the rim's line 2 s or more after the third basket.
+        const before = game.round().score;
+        basket();
+        for (let i = 0; i < 24; i++) game.step();
+        const lob = game.shoot(3, 2, 0, 12);
+        while (game.round().score === before) game.step();
+        const scoredAt = game.world.time;
+        const at3 = { hoop: game.hoop(), spot: game.round().spot };
+        // Stepped until the hoop moves (at most 5 s): where the lob is then.
+        while (JSON.stringify(game.hoop()) === JSON.stringify(first) && game.world.time < scoredAt + 5) game.step();
+        const i = game.ballIds().indexOf(lob);
+        return {
+          first,
+          at3,
+          movedAfter: game.world.time - scoredAt,
+          lobY: i < 0 ? null : game.positions()[2 * i + 1]!,
+          moved: game.hoop(),
+        };
+      });
+      // The round dealt the next spot at the third basket, but the hoop stayed while the lob flew.
+      expect(r.at3.spot).not.toBe(0);
+      expect(r.at3.hoop).toEqual(r.first);
+      expect(r.moved).not.toEqual(r.first);
+      // It moved as the lob came down below the rim's line (a miss), not before: the lob is there
+      // 12 / 9.81 + sqrt(2 (2 + 12^2 / 19.62 - 6) / 9.81) = 2.05 s after its throw (drag-free), which
+      // was 0.4 s after the basket's throw, 1.3 s before the basket: 1.15 s after the basket, within
+      // 0.15 s (the crossing steps, 1/60 s each).
+      expect(Math.abs(r.movedAfter - 1.15), `moved ${r.movedAfter} s after the basket`).toBeLessThan(0.15);
+      expect(r.lobY === null || r.lobY < r.first.y).toBe(true);
+      await g.page.evaluate(() => {
+        (window.game as unknown as { paused: boolean }).paused = false;
+      });
+      expect(g.errors).toEqual([]);
+    });
+
+    it('desktop 1280 x 800: a ball in flight at the third basket scores in the hoop that waited for it, and the next hoop starts its count from none', async () => {
+      const g = page();
+      const r = await g.page.evaluate(() => {
+        const game = window.game as unknown as HoopGame & {
+          paused: boolean;
+          reset(): void;
+          step(): void;
+          remove(id: number): void;
+          ballIds(): number[];
+          world: { time: number };
+        };
+        game.reset();
+        game.paused = true;
+        for (const id of game.ballIds()) game.remove(id);
+        const first = game.hoop();
+        const x = 0.5 * (first.minX + first.maxX),
+          T = 1.3;
+        const basket = () => game.shoot(8, 4, (x - 8) / T, (first.y - 4 + 0.5 * 9.81 * T * T) / T);
+        for (let k = 0; k < 2; k++) {
+          const before = game.round().score;
+          basket();
+          while (game.round().score === before) game.step();
+          for (let i = 0; i < 30; i++) game.step();
+        }
+        // The third basket's throw, and the same throw again 0.4 s later (apart from the first all the way).
+        basket();
+        for (let i = 0; i < 24; i++) game.step();
+        basket();
+        while (game.round().score < 3) game.step();
+        const at3 = game.hoop();
+        const t3 = game.world.time;
+        while (game.round().score < 4 && game.world.time < t3 + 2) game.step();
+        return { first, at3, score: game.round().score, atHoop: game.round().atHoop, after: game.hoop(), gap: game.world.time - t3 };
+      });
+      // The fourth ball went in the first hoop 0.4 s after the third (24 steps of 1/60 s, within a step).
+      expect(r.at3).toEqual(r.first);
+      expect(r.score).toBe(4);
+      expect(Math.abs(r.gap - 0.4)).toBeLessThan(0.02);
+      // Then the hoop moved, none of its three baskets made yet.
+      expect(r.after).not.toEqual(r.first);
+      expect(r.atHoop).toBe(0);
+      await g.page.evaluate(() => {
+        (window.game as unknown as { paused: boolean }).paused = false;
+      });
+      expect(g.errors).toEqual([]);
+    });
+
     it('desktop: a ball that sits on the backboard and rolls into the net scores; the bracket is drawn under the balls', async () => {
       const g = page();
       const r = await g.page.evaluate(() => {
@@ -1164,6 +1274,32 @@ describe('bouncing balls: the hoop game', () => {
 
   describe('phone 390 x 844, touch, 8 balls, one page', () => {
     const page = sharedPage(() => h, 'bouncing-balls', { viewport: { width: 390, height: 844 }, touch: true, query: { count: 8 } });
+
+    it('phone 390 x 844, touch: a ball to throw is marked, "drag me" over it until the first throw', async () => {
+      const g = page();
+      type Marked = HoopGame & { throwable(): { ball: number; label: string }; ballIds(): number[]; positions(): number[] };
+      const first = await g.waitFor(() => {
+        const m = (window.game as unknown as Marked).throwable();
+        return m.ball !== 0 && m.label !== '' ? m : null;
+      }, null);
+      expect(first.label).toBe('drag me');
+      // A ball of the heap, below the shot line (0.3 m under the rim): a throw of it may score.
+      const where = await g.page.evaluate((e) => {
+        const game = window.game as unknown as Marked;
+        const i = game.ballIds().indexOf(e);
+        return { i, y: game.positions()[2 * i + 1]!, rim: game.hoop().y };
+      }, first.ball);
+      expect(where.i).toBeGreaterThanOrEqual(0);
+      expect(where.y).toBeLessThan(where.rim - 0.3);
+      // Thrown: the label is gone (the ring stays, on the next ball to throw).
+      await g.page.evaluate(
+        (e) => (window.game as unknown as { throwBall(e: number, vx: number, vy: number): boolean }).throwBall(e, 0, 6),
+        first.ball,
+      );
+      await g.frames(3);
+      expect(await g.page.evaluate(() => (window.game as unknown as Marked).throwable().label)).toBe('');
+      expect(g.errors).toEqual([]);
+    });
 
     it('phone 390 x 844, touch: the goal shows above the box; a tap does not start the clock; a pull from below the line shows the arc, throws a ball up and away, and the clock waits for the first basket', async () => {
       const g = page();
