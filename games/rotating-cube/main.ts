@@ -17,7 +17,8 @@
  * it tumbles slowly in place, and with no torque L stays fixed while w moves whenever the body is not
  * spinning about a principal axis. Mode 'flip' spins a box with three distinct moments about its
  * intermediate axis on the pivot: it flips over again and again (the Dzhanibekov effect); the plot
- * shows w in the body frame. The challenge: 10 flips within 20 s (hold a yaw key to spin it up; a tap adds about 0.5 rad/s).
+ * shows w in the body frame. The challenge: 10 flips within 20 s (hold a yaw key to spin it up; a tap adds about 0.5 rad/s),
+ * stars by the time taken (scene.ts FLIP_STAR_TIMES; none without the player's input).
  * Keys: room: W A S D roll the cube away, left, towards the viewer, right; Q E turn it a quarter about the
  * vertical; pivot: W/S, A/D, Q/E torque about the camera's right, up and viewing axes. X stops the
  * spin; Space jump (room); M switches mode (room, cube on a pivot, flip); P pause, N single step, R reset.
@@ -93,6 +94,7 @@ import {
   FACES,
   FLIP_BAND,
   FLIP_GOAL,
+  FLIP_STAR_TIMES,
   FLIP_TIME,
   FlipChallenge,
   flipSpin,
@@ -436,7 +438,7 @@ function push(): number {
 /** The first input of a round starts its clock: the pads' in the room, the flips' in flip mode. */
 function startClock(): void {
   if (params.mode === 'room') pads.start(shell.world.time);
-  else if (params.mode === 'flip') flips.start(shell.world.time);
+  else if (params.mode === 'flip') flips.input(shell.world.time);
   else spins.start(shell.world.time);
 }
 
@@ -1682,15 +1684,15 @@ function updateStatus(wx: number, wy: number, wz: number): void {
         ? {
             goal:
               flips.wonAt >= 0
-                ? `${FLIP_GOAL} flips in ${flips.time(t).toFixed(1)} s ${stars(3)}`
+                ? `${FLIP_GOAL} flips in ${flips.time(t).toFixed(1)} s ${stars(flips.stars())}`
                 : `Time! ${n} flips ${stars(flips.stars())}`,
-            numbers: `best ${bestFlips} flips · spin ${spin.toFixed(1)} rad/s`,
+            numbers: `best ${bestFlips} flips · ★★★ within ${FLIP_STAR_TIMES[0]} s, ★★ ${FLIP_STAR_TIMES[1]} s`,
             hint: touch ? 'Next: back to the pads · ↻: try again' : 'Enter: back to the pads · R: try again',
           }
         : {
             goal: touch
               ? `Flip the box over ${FLIP_GOAL} times in ${FLIP_TIME} s`
-              : `Make the box flip over ${FLIP_GOAL} times in ${FLIP_TIME} s, spinning at ${lo} to ${hi} rad/s`,
+              : `Make the box flip over ${FLIP_GOAL} times in ${FLIP_TIME} s (★★★ within ${FLIP_STAR_TIMES[0]} s), spinning at ${lo} to ${hi} rad/s`,
             numbers: `Flips ${n}/${FLIP_GOAL} · ${(FLIP_TIME - flips.time(t)).toFixed(1)} s left · spin ${spin.toFixed(1)}${touch ? ` of ${lo}–${hi}` : ''} ${inBand ? '✓' : '✗'}`,
             hint:
               flips.startedAt < 0
