@@ -637,13 +637,57 @@ function placePadMarks(): void {
 placePadMarks();
 shell.onWorldChange(placePadMarks);
 /**
- * The lit pad's bed (scene.ts PAD_BEDS): a tile on each 1 m cell around the pad that the cube fits in,
- * so the player sees the cells to roll across (a slide stops at the tiles' edge) and counts the rolls.
+ * A roll-only tile's picture, white on clear (the material tints it): a rounded square, see-through
+ * inside, with a dashed rim, and in its middle a circular arrow over the word ROLL, so a player reads
+ * on the tile itself what it takes (the legend in the pads card says the same in words). The word
+ * reads upright from the default view (the picture's top towards -z, the far side).
  */
-const bedMaterial = new MeshBasicMaterial({ color: 0xa9bbdd, map: padFill, transparent: true, opacity: 0.3, depthWrite: false });
+function rollTileTexture(): CanvasTexture {
+  const c = document.createElement('canvas');
+  c.width = c.height = 256;
+  const g = c.getContext('2d')!;
+  g.fillStyle = 'rgba(255, 255, 255, 0.2)';
+  g.strokeStyle = 'rgba(255, 255, 255, 0.85)';
+  g.beginPath();
+  g.roundRect(10, 10, 236, 236, 22);
+  g.fill();
+  g.lineWidth = 7;
+  g.setLineDash([22, 12]);
+  g.stroke();
+  g.setLineDash([]);
+  // A circular arrow (three quarters of a turn, its head at the end): a roll over an edge.
+  g.strokeStyle = g.fillStyle = 'rgba(255, 255, 255, 0.95)';
+  g.lineWidth = 14;
+  g.lineCap = 'round';
+  g.beginPath();
+  g.arc(128, 100, 44, Math.PI * 0.85, Math.PI * 2.35);
+  g.stroke();
+  const hx = 128 + 44 * Math.cos(Math.PI * 2.35),
+    hy = 100 + 44 * Math.sin(Math.PI * 2.35);
+  g.beginPath();
+  g.moveTo(hx + 26, hy - 8);
+  g.lineTo(hx - 12, hy - 20);
+  g.lineTo(hx - 4, hy + 22);
+  g.closePath();
+  g.fill();
+  g.font = '800 54px system-ui, sans-serif';
+  g.textAlign = 'center';
+  g.textBaseline = 'middle';
+  g.fillText('ROLL', 128, 196);
+  const texture = new CanvasTexture(c);
+  texture.colorSpace = SRGBColorSpace;
+  texture.anisotropy = 4;
+  return texture;
+}
+/**
+ * The lit pad's bed (scene.ts PAD_BEDS): a roll-only tile (`rollTileTexture`) on each 1 m cell around
+ * the pad that the cube fits in, so the player sees the cells to roll across (a slide stops at the
+ * tiles' edge) and counts the rolls.
+ */
+const bedMaterial = new MeshBasicMaterial({ color: 0xc4d2ee, map: rollTileTexture(), transparent: true, opacity: 0.75, depthWrite: false });
+const bedPlane = new PlaneGeometry(0.92, 0.92).rotateX(-Math.PI / 2);
 const bedTiles = Array.from({ length: 8 }, () => {
-  const tile = new Mesh(padPlane, bedMaterial);
-  tile.scale.setScalar(0.92 / padPlane.parameters.width / (1 - (2 * PAD_TEX_MARGIN) / PAD_TEX));
+  const tile = new Mesh(bedPlane, bedMaterial);
   tile.visible = false;
   app.scene.add(tile);
   return tile;
@@ -1305,7 +1349,7 @@ function aimAt(ndcX: number, ndcY: number): Push | null {
 function sayWhyNot(): void {
   const roll = pageLayout().touch() ? '▲◀▼▶' : 'W A S D';
   if (aimWhy === 'here') showPop(`The cube is on that cell: pick another, or roll it (${roll})`, 1600, '#bfe9ff');
-  else if (aimWhy === 'bed') showPop(`Slides stop at the tiles: roll onto them (${roll})`, 1800, '#bfe9ff');
+  else if (aimWhy === 'bed') showPop(`Slides stop at the ROLL tiles: roll across them (${roll})`, 1800, '#bfe9ff');
 }
 
 /**
@@ -1865,7 +1909,25 @@ rulesToggle.style.cssText =
 rulesRow.append(rulesChips, rulesToggle);
 const rulesText = document.createElement('div');
 rulesText.style.cssText = 'margin-top: 6px; display: none';
-rules.append(rulesRow, rulesText);
+/**
+ * The legend of the roll-only tiles (the lit pad's bed), under the chips while that pad has a bed: a
+ * small tile as drawn on the floor (dashed rim, circular arrow) and what it means.
+ */
+const bedLegend = document.createElement('div');
+bedLegend.dataset.hud = 'bed-legend';
+bedLegend.style.cssText = 'margin-top: 6px; display: none; align-items: center; gap: 7px; font: 600 12px/1.25 system-ui, sans-serif';
+{
+  const swatch = document.createElement('span');
+  swatch.textContent = '⟳';
+  swatch.setAttribute('aria-hidden', 'true');
+  swatch.style.cssText =
+    'flex: 0 0 auto; width: 24px; height: 24px; box-sizing: border-box; border: 2px dashed #dbe5f7; border-radius: 5px;' +
+    'background: rgba(196, 210, 238, 0.3); color: #fff; display: flex; align-items: center; justify-content: center; font: 700 15px system-ui, sans-serif';
+  const words = document.createElement('span');
+  words.textContent = 'ROLL tiles: a slide stops at their edge, roll across them';
+  bedLegend.append(swatch, words);
+}
+rules.append(rulesRow, bedLegend, rulesText);
 (app.canvas.parentElement ?? document.body).append(rules);
 /** Whether the rules (behind "?") are open. */
 let rulesShown = false;
@@ -1897,14 +1959,15 @@ function showRules(): void {
   );
   const three = `${stars(3)}: par + ${PAR_SLACK[0]} moves or fewer.`;
   rulesText.textContent = touch
-    ? `Land on the pads in turn. From pad 2, ROLL on with the chip's colour on top (a slide keeps the top face); from pad 3 slides stop at the tiles. Every slide, roll and turn is a move; "best: N more moves" counts the fewest left. The clock runs only while the cube is still. ${three}`
-    : `Land on the pads in turn. From pad 2, ROLL on (W A S D) with the chip's colour on top: a slide keeps the top face. From pad 3 slides stop at the tiles round the pad, so the route across them decides the face: the net at the left shows what each roll brings up, and "best: N more moves" counts the fewest left. Every slide, roll and quarter turn (Q E) is a move. The clock runs only while the cube is still. ${three}`;
+    ? `Land on the pads in turn. From pad 2, ROLL on with the chip's colour on top (a slide keeps the top face); from pad 3 slides stop at the ROLL tiles round the pad. Every slide, roll and turn is a move; "best: N more moves" counts the fewest left. The clock runs only while the cube is still. ${three}`
+    : `Land on the pads in turn. From pad 2, ROLL on (W A S D) with the chip's colour on top: a slide keeps the top face. From pad 3 slides stop at the ROLL tiles round the pad, so the route across them decides the face: the net at the left shows what each roll brings up, and "best: N more moves" counts the fewest left. Every slide, roll and quarter turn (Q E) is a move. The clock runs only while the cube is still. ${three}`;
   hideRules();
   markChips();
 }
 /** Ticks the chips of the pads reached and rings the lit one (the card hides once the round is over, or out of the room). */
 function markChips(): void {
   rules.style.display = params.mode === 'room' && !pads.done ? 'block' : 'none';
+  bedLegend.style.display = (layout.beds[pads.pad] ?? -1) > 0 ? 'flex' : 'none';
   [...rulesChips.children].forEach((chip, i) => {
     const el = chip as HTMLElement;
     el.style.opacity = i < pads.pad ? '0.45' : '1';
@@ -2253,10 +2316,17 @@ shell.expose({
    * and the opacity of the pads reached, in [0, 1] (0.55 while the round runs, pulsing 0.5 to 1 once won).
    */
   padState: () => ({ over: pads.over, rim: padRim.visible, blocked: pads.blocked, goldOpacity: padDoneMaterial.opacity }),
-  /** The pads card: whether it shows, whether its rules (behind "?") are open, and the face each pad wants as its chips name it (a colour name or 'any'). */
+  /**
+   * The pads card: whether it shows, whether its rules (behind "?") are open, whether the roll-only
+   * tiles' legend shows (while the lit pad has a bed) and its words, and the face each pad wants as
+   * its chips name it (a colour name or 'any').
+   */
   rules: () => ({
     shown: rules.style.display !== 'none',
     open: rulesShown,
+    legend: bedLegend.style.display !== 'none',
+    legendText: bedLegend.textContent ?? '',
+    bedTiles: bedTiles.filter((t) => t.visible).length,
     chips: [...rulesChips.children].map((c) => (c as HTMLElement).dataset.face ?? ''),
   }),
   /** Whether the aim marker (the arrow from the cube and the ring where a push would stop it) is drawn. */
