@@ -85,6 +85,7 @@ import {
 } from 'three';
 import { cubeControls, TAP_SLOP, touchPress } from './controls';
 import { bedSnap } from './roll-puzzle';
+import { buildRoomLook } from './room-look';
 import { type RoundEndContent, roundEnd, starText } from './round-end';
 import { roundMovesText } from './round-moves';
 import {
@@ -133,6 +134,8 @@ import { ToGoMeter } from './to-go';
 const CLICK_SLOP = 5;
 /** Room mode: a push lands within this of its target, m, for a "perfect" (the pad's pop says so). */
 const PERFECT = 0.25;
+/** On the pivot: the height of the floor under it, m (the pivot's post stands on it; it catches the shadow). */
+const PIVOT_FLOOR_Y = -1.6;
 /** Length of the angular-velocity arrow at the starting spin (or at 1 rad/s if slower), m. */
 const ARROW_LENGTH = 1.6;
 
@@ -312,7 +315,7 @@ function createWorld(): PhysicsWorld {
     else if (spins.update(w, handles.body)) spinsReached.push(spins.target - 1);
   });
   // Held at its pivot, the box has no collider: a floor far below only catches the shadow. The room has its own floor.
-  if (params.mode !== 'room') addPlane(world, { normal: [0, 1, 0], point: [0, -1.6, 0] });
+  if (params.mode !== 'room') addPlane(world, { normal: [0, 1, 0], point: [0, PIVOT_FLOOR_Y, 0] });
   return world;
 }
 
@@ -369,7 +372,17 @@ const game = await startThreeGame({
     boundary: 'none',
     floorColor: 0x3c4660,
     boxMaterial: wallMaterial,
-    lights: { intensity: 2.4, hemisphereIntensity: 1.2, skyColor: 0xeaf2ff, groundColor: 0x5a4e40, direction: [0.5, 1, 0.35] },
+    // A warm low sun from the back left (the cube's shadow falls towards the viewer, on the floor in
+    // sight) under a cool dusk sky; its shadows softened below (shadow radius).
+    lights: {
+      color: 0xffe4c0,
+      intensity: 2.6,
+      hemisphereIntensity: 1.1,
+      skyColor: 0xcad6ff,
+      groundColor: 0x6a5242,
+      direction: [-0.45, 1, -0.5],
+      shadowMapSize: 1024,
+    },
   },
   view: viewOf(params.mode),
   viewDirection: viewDirectionOf(params.mode),
@@ -377,6 +390,9 @@ const game = await startThreeGame({
 });
 const { shell, renderer, app } = game;
 threeApp = app;
+// Soft shadow edges: PCF filtering over a wider disc of the shadow map (a 1024 px map blurred reads
+// as soft daylight, and costs a software renderer a quarter of the default 2048 px one).
+if (renderer.lights) renderer.lights.sun.shadow.radius = 4;
 framedMode = params.mode;
 clampOrbit();
 
@@ -495,9 +511,17 @@ function framedSquare(size: number, fill: string, stroke: string, lineWidth: num
  */
 const edgeTexture = framedSquare(64, '#ffffff', '#6e6e6e', 6);
 const boxMaterial = new MeshStandardMaterial({ vertexColors: true, map: edgeTexture, roughness: 0.55, metalness: 0.05 });
+/** The room's scenery (room-look.ts): floor, stone walls, terrace, props, skyline, the lit pad's glow. */
+const look = buildRoomLook(app.scene, ROOM_HALF, WALL_HEIGHT, WALL_HALF_THICKNESS);
 const dress = (): void => {
   renderer.setShape(handles.body, { geometry: boxGeometry, material: boxMaterial, scale: 'inertia' });
-  for (const wall of handles.walls) renderer.setColor(wall, 0xb9c8e6);
+  // The walls in scene.ts buildRoom's order (+x, -x, +z, -z), each drawn in the look's stone.
+  const t = WALL_HALF_THICKNESS,
+    h = WALL_HEIGHT / 2,
+    l = ROOM_HALF + 2 * t;
+  handles.walls.forEach((wall, i) => {
+    renderer.setShape(wall, i < 2 ? look.wallShape(i, t, h, l) : look.wallShape(i, l, h, t));
+  });
 };
 dress();
 shell.onWorldChange(() => {
@@ -2097,6 +2121,24 @@ function frame(): void {
     padRim.position.set(spot[0], 0.025, spot[1]);
   }
   padRim.visible = padLit && pads.over;
+  {
+    // The look's ground at the room's floor, or on the pivot at the plane under it (PIVOT_FLOOR_Y);
+    // the renderer's plain floor plane is hidden under the look's floor and terrace.
+    look.setShown(true, room ? 0 : PIVOT_FLOOR_Y);
+    const plane = app.scene.getObjectByName('planes');
+    if (plane) plane.visible = false;
+    const spot = layout.pads[pads.pad],
+      want = layout.faces[pads.pad] ?? -1;
+    const glow = padLit && spot ? (pads.over ? 1 : 0.65 + 0.25 * Math.sin(now / 250)) : 0;
+    look.update(
+      app.camera.position,
+      spot?.[0] ?? 0,
+      spot?.[1] ?? 0,
+      layout.halves[pads.pad] ?? PAD_HALF,
+      want >= 0 ? faceColors[want]! : ANY_COLOR,
+      glow,
+    );
+  }
   // The footprint follows the cube's centre while it is near the floor (not high in a jump), square to its grid.
   footprint.visible = footprintThrough.visible = room && P.y[e]! < 0.9;
   footprint.position.set(P.x[e]!, 0.03, P.z[e]!);
