@@ -36,6 +36,9 @@
  * pad's rim lights while the cube's centre is near enough to count (scene.ts PAD_GRACE); resting there
  * with the wrong face up (or slid on) the pop says why it does not count. A round's end shows a banner
  * with the result, Next (Enter) and Retry (R) (game-kit's createDomResultCard, round-end.ts).
+ * The scenery (room-look.ts): a plank floor in stone walls (those on the camera's side see-through), a
+ * terrace with props, a skyline against a dusk sky, the lit pad's halo and beam; the pivot modes stand
+ * on the same deck.
  * URL: ?mode=room|cube|flip (default room), ?spin=rad/s (flip), ?seed=N (the same pad layout every run).
  */
 
@@ -319,12 +322,6 @@ function createWorld(): PhysicsWorld {
   return world;
 }
 
-/**
- * The walls' material (the renderer's box material, which only the walls use: the body has its own):
- * light and half see-through, so the cube stays in sight behind the near wall from any side.
- */
-const wallMaterial = new MeshStandardMaterial({ roughness: 0.75, metalness: 0, transparent: true, opacity: 0.5, depthWrite: false });
-
 // Read by frame() and the step, which the shell may call before this module's code after the await below has run.
 /** The page's sound (impacts, pushes, the pads' chimes). */
 const sound = getSound();
@@ -371,7 +368,6 @@ const game = await startThreeGame({
     planeSize: 14,
     boundary: 'none',
     floorColor: 0x3c4660,
-    boxMaterial: wallMaterial,
     // A warm low sun from the back left (the cube's shadow falls towards the viewer, on the floor in
     // sight) under a cool dusk sky; its shadows softened below (shadow radius).
     lights: {
