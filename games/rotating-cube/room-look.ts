@@ -230,7 +230,8 @@ export interface RoomLook {
   wallShape(i: number, hx: number, hy: number, hz: number): { geometry: BoxGeometry; material: MeshStandardMaterial; scale: number };
   /**
    * Shows the look (and its fog and sky) with its ground at height `floorY`, m (the pivot modes' floor
-   * lies under the pivot), or hides it (`shown` false: the renderer's plain scenery).
+   * lies under the pivot; the planters and crates show only at 0, the room's), or hides it (`shown`
+   * false: the renderer's plain scenery).
    */
   setShown(shown: boolean, floorY?: number): void;
   /**
@@ -309,6 +310,10 @@ export function buildRoomLook(scene: Scene, roomHalf: number, wallHeight: number
       p.castShadow = true;
       object.add(p, b);
     }
+  // The planters and crates stand by the room's walls; on the pivot they stood behind the spinning box
+  // and muddled its outline, so they show in the room only (`setShown`).
+  const props = new Group();
+  object.add(props);
   const pot = new MeshStandardMaterial({ color: 0x8a4b32, roughness: 0.8 });
   const leaves = new MeshStandardMaterial({ color: 0x3f7d3a, roughness: 0.9, flatShading: true });
   const potGeometry = new CylinderGeometry(0.32, 0.24, 0.55, 12).translate(0, 0.275, 0);
@@ -324,7 +329,7 @@ export function buildRoomLook(scene: Scene, roomHalf: number, wallHeight: number
     b.position.set(x, 0, z);
     b.rotation.y = x + z;
     a.castShadow = b.castShadow = true;
-    object.add(a, b);
+    props.add(a, b);
   }
   const crateMaterial = new MeshStandardMaterial({ map: planks, color: 0xd9b98c, roughness: 0.8 });
   const crate = metricBox(0.35, 0.35, 0.35).translate(0, 0.35, 0);
@@ -337,7 +342,7 @@ export function buildRoomLook(scene: Scene, roomHalf: number, wallHeight: number
     c.position.set(x, y, z);
     c.rotation.y = turn;
     c.castShadow = c.receiveShadow = true;
-    object.add(c);
+    props.add(c);
   }
 
   // The skyline: a ring of towers far off, unfogged, against the dusk sky (the scene's background).
@@ -379,6 +384,7 @@ export function buildRoomLook(scene: Scene, roomHalf: number, wallHeight: number
     setShown(shown, floorY = 0) {
       object.visible = shown;
       object.position.y = floorY;
+      props.visible = floorY === 0;
       scene.fog = shown ? fog : null;
       scene.background = shown ? sky : background;
     },
