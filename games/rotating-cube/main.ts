@@ -17,7 +17,8 @@
  * it tumbles slowly in place, and with no torque L stays fixed while w moves whenever the body is not
  * spinning about a principal axis. Mode 'flip' spins a box with three distinct moments about its
  * intermediate axis on the pivot: it flips over again and again (the Dzhanibekov effect); the plot
- * shows w in the body frame. The challenge: 10 flips within 20 s (hold a yaw key to spin it up; a tap adds about 0.5 rad/s).
+ * shows w in the body frame. The challenge: 10 flips within 20 s (hold a yaw key to spin it up; a tap adds about 0.5 rad/s),
+ * stars by the time taken (scene.ts FLIP_STAR_TIMES; none without the player's input).
  * Keys: room: W A S D roll the cube away, left, towards the viewer, right; Q E turn it a quarter about the
  * vertical; pivot: W/S, A/D, Q/E torque about the camera's right, up and viewing axes. X stops the
  * spin; Space jump (room); M switches mode (room, cube on a pivot, flip); P pause, N single step, R reset.
@@ -35,6 +36,9 @@
  * pad's rim lights while the cube's centre is near enough to count (scene.ts PAD_GRACE); resting there
  * with the wrong face up (or slid on) the pop says why it does not count. A round's end shows a banner
  * with the result, Next (Enter) and Retry (R) (game-kit's createDomResultCard, round-end.ts).
+ * The scenery (room-look.ts): a plank floor in stone walls (those on the camera's side see-through), a
+ * terrace with props, a skyline against a dusk sky, the lit pad's halo and beam; the pivot modes stand
+ * on the same deck.
  * URL: ?mode=room|cube|flip (default room), ?spin=rad/s (flip), ?seed=N (the same pad layout every run).
  */
 
@@ -84,6 +88,7 @@ import {
 } from 'three';
 import { cubeControls, TAP_SLOP, touchPress } from './controls';
 import { bedSnap } from './roll-puzzle';
+import { buildRoomLook } from './room-look';
 import { type RoundEndContent, roundEnd, starText } from './round-end';
 import { roundMovesText } from './round-moves';
 import {
@@ -93,6 +98,7 @@ import {
   FACES,
   FLIP_BAND,
   FLIP_GOAL,
+  FLIP_STAR_TIMES,
   FLIP_TIME,
   FlipChallenge,
   flipSpin,
@@ -131,6 +137,8 @@ import { ToGoMeter } from './to-go';
 const CLICK_SLOP = 5;
 /** Room mode: a push lands within this of its target, m, for a "perfect" (the pad's pop says so). */
 const PERFECT = 0.25;
+/** On the pivot: the height of the floor under it, m (the pivot's post stands on it; it catches the shadow). */
+const PIVOT_FLOOR_Y = -1.6;
 /** Length of the angular-velocity arrow at the starting spin (or at 1 rad/s if slower), m. */
 const ARROW_LENGTH = 1.6;
 
@@ -310,15 +318,9 @@ function createWorld(): PhysicsWorld {
     else if (spins.update(w, handles.body)) spinsReached.push(spins.target - 1);
   });
   // Held at its pivot, the box has no collider: a floor far below only catches the shadow. The room has its own floor.
-  if (params.mode !== 'room') addPlane(world, { normal: [0, 1, 0], point: [0, -1.6, 0] });
+  if (params.mode !== 'room') addPlane(world, { normal: [0, 1, 0], point: [0, PIVOT_FLOOR_Y, 0] });
   return world;
 }
-
-/**
- * The walls' material (the renderer's box material, which only the walls use: the body has its own):
- * light and half see-through, so the cube stays in sight behind the near wall from any side.
- */
-const wallMaterial = new MeshStandardMaterial({ roughness: 0.75, metalness: 0, transparent: true, opacity: 0.5, depthWrite: false });
 
 // Read by frame() and the step, which the shell may call before this module's code after the await below has run.
 /** The page's sound (impacts, pushes, the pads' chimes). */
@@ -366,8 +368,17 @@ const game = await startThreeGame({
     planeSize: 14,
     boundary: 'none',
     floorColor: 0x3c4660,
-    boxMaterial: wallMaterial,
-    lights: { intensity: 2.4, hemisphereIntensity: 1.2, skyColor: 0xeaf2ff, groundColor: 0x5a4e40, direction: [0.5, 1, 0.35] },
+    // A warm low sun from the back left (the cube's shadow falls towards the viewer, on the floor in
+    // sight) under a cool dusk sky; its shadows softened below (shadow radius).
+    lights: {
+      color: 0xffe4c0,
+      intensity: 2.6,
+      hemisphereIntensity: 1.1,
+      skyColor: 0xcad6ff,
+      groundColor: 0x6a5242,
+      direction: [-0.45, 1, -0.5],
+      shadowMapSize: 1024,
+    },
   },
   view: viewOf(params.mode),
   viewDirection: viewDirectionOf(params.mode),
@@ -375,6 +386,9 @@ const game = await startThreeGame({
 });
 const { shell, renderer, app } = game;
 threeApp = app;
+// Soft shadow edges: PCF filtering over a wider disc of the shadow map (a 1024 px map blurred reads
+// as soft daylight, and costs a software renderer a quarter of the default 2048 px one).
+if (renderer.lights) renderer.lights.sun.shadow.radius = 4;
 framedMode = params.mode;
 clampOrbit();
 
@@ -436,7 +450,7 @@ function push(): number {
 /** The first input of a round starts its clock: the pads' in the room, the flips' in flip mode. */
 function startClock(): void {
   if (params.mode === 'room') pads.start(shell.world.time);
-  else if (params.mode === 'flip') flips.start(shell.world.time);
+  else if (params.mode === 'flip') flips.input(shell.world.time);
   else spins.start(shell.world.time);
 }
 
@@ -493,9 +507,17 @@ function framedSquare(size: number, fill: string, stroke: string, lineWidth: num
  */
 const edgeTexture = framedSquare(64, '#ffffff', '#6e6e6e', 6);
 const boxMaterial = new MeshStandardMaterial({ vertexColors: true, map: edgeTexture, roughness: 0.55, metalness: 0.05 });
+/** The room's scenery (room-look.ts): floor, stone walls, terrace, props, skyline, the lit pad's glow. */
+const look = buildRoomLook(app.scene, ROOM_HALF, WALL_HEIGHT, WALL_HALF_THICKNESS);
 const dress = (): void => {
   renderer.setShape(handles.body, { geometry: boxGeometry, material: boxMaterial, scale: 'inertia' });
-  for (const wall of handles.walls) renderer.setColor(wall, 0xb9c8e6);
+  // The walls in scene.ts buildRoom's order (+x, -x, +z, -z), each drawn in the look's stone.
+  const t = WALL_HALF_THICKNESS,
+    h = WALL_HEIGHT / 2,
+    l = ROOM_HALF + 2 * t;
+  handles.walls.forEach((wall, i) => {
+    renderer.setShape(wall, i < 2 ? look.wallShape(i, t, h, l) : look.wallShape(i, l, h, t));
+  });
 };
 dress();
 shell.onWorldChange(() => {
@@ -635,13 +657,57 @@ function placePadMarks(): void {
 placePadMarks();
 shell.onWorldChange(placePadMarks);
 /**
- * The lit pad's bed (scene.ts PAD_BEDS): a tile on each 1 m cell around the pad that the cube fits in,
- * so the player sees the cells to roll across (a slide stops at the tiles' edge) and counts the rolls.
+ * A roll-only tile's picture, white on clear (the material tints it): a rounded square, see-through
+ * inside, with a dashed rim, and in its middle a circular arrow over the word ROLL, so a player reads
+ * on the tile itself what it takes (the legend in the pads card says the same in words). The word
+ * reads upright from the default view (the picture's top towards -z, the far side).
  */
-const bedMaterial = new MeshBasicMaterial({ color: 0xa9bbdd, map: padFill, transparent: true, opacity: 0.3, depthWrite: false });
+function rollTileTexture(): CanvasTexture {
+  const c = document.createElement('canvas');
+  c.width = c.height = 256;
+  const g = c.getContext('2d')!;
+  g.fillStyle = 'rgba(255, 255, 255, 0.2)';
+  g.strokeStyle = 'rgba(255, 255, 255, 0.85)';
+  g.beginPath();
+  g.roundRect(10, 10, 236, 236, 22);
+  g.fill();
+  g.lineWidth = 7;
+  g.setLineDash([22, 12]);
+  g.stroke();
+  g.setLineDash([]);
+  // A circular arrow (three quarters of a turn, its head at the end): a roll over an edge.
+  g.strokeStyle = g.fillStyle = 'rgba(255, 255, 255, 0.95)';
+  g.lineWidth = 14;
+  g.lineCap = 'round';
+  g.beginPath();
+  g.arc(128, 100, 44, Math.PI * 0.85, Math.PI * 2.35);
+  g.stroke();
+  const hx = 128 + 44 * Math.cos(Math.PI * 2.35),
+    hy = 100 + 44 * Math.sin(Math.PI * 2.35);
+  g.beginPath();
+  g.moveTo(hx + 26, hy - 8);
+  g.lineTo(hx - 12, hy - 20);
+  g.lineTo(hx - 4, hy + 22);
+  g.closePath();
+  g.fill();
+  g.font = '800 54px system-ui, sans-serif';
+  g.textAlign = 'center';
+  g.textBaseline = 'middle';
+  g.fillText('ROLL', 128, 196);
+  const texture = new CanvasTexture(c);
+  texture.colorSpace = SRGBColorSpace;
+  texture.anisotropy = 4;
+  return texture;
+}
+/**
+ * The lit pad's bed (scene.ts PAD_BEDS): a roll-only tile (`rollTileTexture`) on each 1 m cell around
+ * the pad that the cube fits in, so the player sees the cells to roll across (a slide stops at the
+ * tiles' edge) and counts the rolls.
+ */
+const bedMaterial = new MeshBasicMaterial({ color: 0xc4d2ee, map: rollTileTexture(), transparent: true, opacity: 0.75, depthWrite: false });
+const bedPlane = new PlaneGeometry(0.92, 0.92).rotateX(-Math.PI / 2);
 const bedTiles = Array.from({ length: 8 }, () => {
-  const tile = new Mesh(padPlane, bedMaterial);
-  tile.scale.setScalar(0.92 / padPlane.parameters.width / (1 - (2 * PAD_TEX_MARGIN) / PAD_TEX));
+  const tile = new Mesh(bedPlane, bedMaterial);
   tile.visible = false;
   app.scene.add(tile);
   return tile;
@@ -1303,7 +1369,7 @@ function aimAt(ndcX: number, ndcY: number): Push | null {
 function sayWhyNot(): void {
   const roll = pageLayout().touch() ? '▲◀▼▶' : 'W A S D';
   if (aimWhy === 'here') showPop(`The cube is on that cell: pick another, or roll it (${roll})`, 1600, '#bfe9ff');
-  else if (aimWhy === 'bed') showPop(`Slides stop at the tiles: roll onto them (${roll})`, 1800, '#bfe9ff');
+  else if (aimWhy === 'bed') showPop(`Slides stop at the ROLL tiles: roll across them (${roll})`, 1800, '#bfe9ff');
 }
 
 /**
@@ -1682,15 +1748,15 @@ function updateStatus(wx: number, wy: number, wz: number): void {
         ? {
             goal:
               flips.wonAt >= 0
-                ? `${FLIP_GOAL} flips in ${flips.time(t).toFixed(1)} s ${stars(3)}`
+                ? `${FLIP_GOAL} flips in ${flips.time(t).toFixed(1)} s ${stars(flips.stars())}`
                 : `Time! ${n} flips ${stars(flips.stars())}`,
-            numbers: `best ${bestFlips} flips · spin ${spin.toFixed(1)} rad/s`,
+            numbers: `best ${bestFlips} flips · ★★★ within ${FLIP_STAR_TIMES[0]} s, ★★ ${FLIP_STAR_TIMES[1]} s`,
             hint: touch ? 'Next: back to the pads · ↻: try again' : 'Enter: back to the pads · R: try again',
           }
         : {
             goal: touch
               ? `Flip the box over ${FLIP_GOAL} times in ${FLIP_TIME} s`
-              : `Make the box flip over ${FLIP_GOAL} times in ${FLIP_TIME} s, spinning at ${lo} to ${hi} rad/s`,
+              : `Make the box flip over ${FLIP_GOAL} times in ${FLIP_TIME} s (★★★ within ${FLIP_STAR_TIMES[0]} s), spinning at ${lo} to ${hi} rad/s`,
             numbers: `Flips ${n}/${FLIP_GOAL} · ${(FLIP_TIME - flips.time(t)).toFixed(1)} s left · spin ${spin.toFixed(1)}${touch ? ` of ${lo}–${hi}` : ''} ${inBand ? '✓' : '✗'}`,
             hint:
               flips.startedAt < 0
@@ -1863,7 +1929,25 @@ rulesToggle.style.cssText =
 rulesRow.append(rulesChips, rulesToggle);
 const rulesText = document.createElement('div');
 rulesText.style.cssText = 'margin-top: 6px; display: none';
-rules.append(rulesRow, rulesText);
+/**
+ * The legend of the roll-only tiles (the lit pad's bed), under the chips while that pad has a bed: a
+ * small tile as drawn on the floor (dashed rim, circular arrow) and what it means.
+ */
+const bedLegend = document.createElement('div');
+bedLegend.dataset.hud = 'bed-legend';
+bedLegend.style.cssText = 'margin-top: 6px; display: none; align-items: center; gap: 7px; font: 600 12px/1.25 system-ui, sans-serif';
+{
+  const swatch = document.createElement('span');
+  swatch.textContent = '⟳';
+  swatch.setAttribute('aria-hidden', 'true');
+  swatch.style.cssText =
+    'flex: 0 0 auto; width: 24px; height: 24px; box-sizing: border-box; border: 2px dashed #dbe5f7; border-radius: 5px;' +
+    'background: rgba(196, 210, 238, 0.3); color: #fff; display: flex; align-items: center; justify-content: center; font: 700 15px system-ui, sans-serif';
+  const words = document.createElement('span');
+  words.textContent = 'ROLL tiles: a slide stops at their edge, roll across them';
+  bedLegend.append(swatch, words);
+}
+rules.append(rulesRow, bedLegend, rulesText);
 (app.canvas.parentElement ?? document.body).append(rules);
 /** Whether the rules (behind "?") are open. */
 let rulesShown = false;
@@ -1895,14 +1979,15 @@ function showRules(): void {
   );
   const three = `${stars(3)}: par + ${PAR_SLACK[0]} moves or fewer.`;
   rulesText.textContent = touch
-    ? `Land on the pads in turn. From pad 2, ROLL on with the chip's colour on top (a slide keeps the top face); from pad 3 slides stop at the tiles. Every slide, roll and turn is a move; "best: N more moves" counts the fewest left. The clock runs only while the cube is still. ${three}`
-    : `Land on the pads in turn. From pad 2, ROLL on (W A S D) with the chip's colour on top: a slide keeps the top face. From pad 3 slides stop at the tiles round the pad, so the route across them decides the face: the net at the left shows what each roll brings up, and "best: N more moves" counts the fewest left. Every slide, roll and quarter turn (Q E) is a move. The clock runs only while the cube is still. ${three}`;
+    ? `Land on the pads in turn. From pad 2, ROLL on with the chip's colour on top (a slide keeps the top face); from pad 3 slides stop at the ROLL tiles round the pad. Every slide, roll and turn is a move; "best: N more moves" counts the fewest left. The clock runs only while the cube is still. ${three}`
+    : `Land on the pads in turn. From pad 2, ROLL on (W A S D) with the chip's colour on top: a slide keeps the top face. From pad 3 slides stop at the ROLL tiles round the pad, so the route across them decides the face: the net at the left shows what each roll brings up, and "best: N more moves" counts the fewest left. Every slide, roll and quarter turn (Q E) is a move. The clock runs only while the cube is still. ${three}`;
   hideRules();
   markChips();
 }
 /** Ticks the chips of the pads reached and rings the lit one (the card hides once the round is over, or out of the room). */
 function markChips(): void {
   rules.style.display = params.mode === 'room' && !pads.done ? 'block' : 'none';
+  bedLegend.style.display = (layout.beds[pads.pad] ?? -1) > 0 ? 'flex' : 'none';
   [...rulesChips.children].forEach((chip, i) => {
     const el = chip as HTMLElement;
     el.style.opacity = i < pads.pad ? '0.45' : '1';
@@ -2032,6 +2117,24 @@ function frame(): void {
     padRim.position.set(spot[0], 0.025, spot[1]);
   }
   padRim.visible = padLit && pads.over;
+  {
+    // The look's ground at the room's floor, or on the pivot at the plane under it (PIVOT_FLOOR_Y);
+    // the renderer's plain floor plane is hidden under the look's floor and terrace.
+    look.setShown(true, room ? 0 : PIVOT_FLOOR_Y);
+    const plane = app.scene.getObjectByName('planes');
+    if (plane) plane.visible = false;
+    const spot = layout.pads[pads.pad],
+      want = layout.faces[pads.pad] ?? -1;
+    const glow = padLit && spot ? (pads.over ? 1 : 0.65 + 0.25 * Math.sin(now / 250)) : 0;
+    look.update(
+      app.camera.position,
+      spot?.[0] ?? 0,
+      spot?.[1] ?? 0,
+      layout.halves[pads.pad] ?? PAD_HALF,
+      want >= 0 ? faceColors[want]! : ANY_COLOR,
+      glow,
+    );
+  }
   // The footprint follows the cube's centre while it is near the floor (not high in a jump), square to its grid.
   footprint.visible = footprintThrough.visible = room && P.y[e]! < 0.9;
   footprint.position.set(P.x[e]!, 0.03, P.z[e]!);
@@ -2251,10 +2354,17 @@ shell.expose({
    * and the opacity of the pads reached, in [0, 1] (0.55 while the round runs, pulsing 0.5 to 1 once won).
    */
   padState: () => ({ over: pads.over, rim: padRim.visible, blocked: pads.blocked, goldOpacity: padDoneMaterial.opacity }),
-  /** The pads card: whether it shows, whether its rules (behind "?") are open, and the face each pad wants as its chips name it (a colour name or 'any'). */
+  /**
+   * The pads card: whether it shows, whether its rules (behind "?") are open, whether the roll-only
+   * tiles' legend shows (while the lit pad has a bed) and its words, and the face each pad wants as
+   * its chips name it (a colour name or 'any').
+   */
   rules: () => ({
     shown: rules.style.display !== 'none',
     open: rulesShown,
+    legend: bedLegend.style.display !== 'none',
+    legendText: bedLegend.textContent ?? '',
+    bedTiles: bedTiles.filter((t) => t.visible).length,
     chips: [...rulesChips.children].map((c) => (c as HTMLElement).dataset.face ?? ''),
   }),
   /** Whether the aim marker (the arrow from the cube and the ring where a push would stop it) is drawn. */

@@ -2,10 +2,10 @@
  * The end of a round in each of the rotating cube's modes, for its banner (game-kit's result card): whether the
  * round is over and what the banner then says: the pads (all reached: the stars by moves against
  * par), the spins (all three held: the stars by time) and the flips (won with FLIP_GOAL flips in
- * time, or lost when FLIP_TIME runs out). Pure (no DOM, no three.js).
+ * time, the stars by that time, or lost, no stars, when FLIP_TIME runs out). Pure (no DOM, no three.js).
  */
 import type { PhysicsWorld } from '@bitphysics/physics';
-import { FLIP_BAND, FLIP_GOAL, type FlipChallenge, type Mode, PAR_SLACK, type PadChallenge, padStars } from './scene';
+import { FLIP_BAND, FLIP_GOAL, FLIP_STAR_TIMES, type FlipChallenge, type Mode, PAR_SLACK, type PadChallenge, padStars } from './scene';
 import { SPIN_STAR_TIMES, type SpinChallenge } from './spin-challenge';
 
 /** `n` stars of three as text: filled then hollow ('★★☆' for 2). @throws RangeError if n is not an integer in [0, 3]. */
@@ -70,8 +70,12 @@ export function roundEnd(mode: Mode, rounds: Rounds, world: PhysicsWorld, bestMo
   const won = flips.wonAt >= 0;
   return {
     title: won ? `${FLIP_GOAL} flips!` : 'Time!',
-    big: won ? `${starText(3)} ${flips.time(world.time).toFixed(1)} s` : `${starText(flips.stars())} ${flips.counter.count} flips`,
-    detail: won ? 'next: back to the pads' : `flips count only while the spin stays ${FLIP_BAND[0]} to ${FLIP_BAND[1]} rad/s`,
+    big: won
+      ? `${starText(flips.stars())} ${flips.time(world.time).toFixed(1)} s`
+      : `${starText(flips.stars())} ${flips.counter.count} flips`,
+    detail: won
+      ? `★★★ within ${FLIP_STAR_TIMES[0]} s, ★★ ${FLIP_STAR_TIMES[1]} s: a kick (W or S) makes it flip sooner`
+      : `flips count only while the spin stays ${FLIP_BAND[0]} to ${FLIP_BAND[1]} rad/s`,
     next: 'Back to the pads',
     retry: 'Try again',
     won,

@@ -786,10 +786,20 @@ export class PadChallenge {
 }
 
 /**
+ * Flip mode: the round's time to FLIP_GOAL flips, s, for three stars and for two (a win slower than
+ * the second earns one). Spun up into FLIP_BAND with the yaw key and let go, the box flips FLIP_GOAL
+ * times in 10.9 s at best (about 11 to 13.5 s over the spins it may be let go at, 8 to 12 rad/s):
+ * two stars at most. Three take a pitch kick (W or S) that tips it off its intermediate axis: one
+ * 0.35 s tap in the first seconds wins in 7.2 to 10 s, by when in the turn it lands.
+ */
+export const FLIP_STAR_TIMES: readonly [number, number] = Object.freeze([9, 12]) as readonly [number, number];
+
+/**
  * Flip mode's challenge: count the box's flips (`FlipCounter`) made with its spin (`flipSpin`) inside FLIP_BAND
  * over FLIP_TIME seconds from `startedAt`, the world time of the player's first input (`start`: like
  * the pads' clock, reading the goal costs nothing; nothing counts before it); won when FLIP_GOAL
- * flips come within the time (`wonAt`), lost when the time runs out first.
+ * flips come within the time (`wonAt`), lost when the time runs out first. Stars (`stars`) only for
+ * a round won after the player's inputs (`input`), by its time against FLIP_STAR_TIMES.
  */
 export class FlipChallenge {
   /** The flips counted. */
@@ -798,6 +808,8 @@ export class FlipChallenge {
   wonAt = -1;
   /** World time the round's clock started (the first input), s, or -1 before it. */
   startedAt = -1;
+  /** The player's inputs (key presses, clicks on the box) counted by `input` since the reset, >= 0. */
+  inputs = 0;
   private readonly L = new Float64Array(3);
   private readonly axis = new Float64Array(3);
   /** Starts again. */
@@ -805,10 +817,16 @@ export class FlipChallenge {
     this.counter.reset();
     this.wonAt = -1;
     this.startedAt = -1;
+    this.inputs = 0;
   }
   /** Starts the round's clock at world time `time`, s (only the first call counts). */
   start(time: number): void {
     if (this.startedAt < 0) this.startedAt = time;
+  }
+  /** Counts an input of the player at world time `time`, s, and starts the round's clock with the first (`start`). */
+  input(time: number): void {
+    this.start(time);
+    this.inputs++;
   }
   /** The round's clock at world time `now`, s: 0 before the start, at most FLIP_TIME, the time taken once won. */
   time(now: number): number {
@@ -819,10 +837,14 @@ export class FlipChallenge {
   over(world: PhysicsWorld): boolean {
     return this.wonAt >= 0 || (this.startedAt >= 0 && world.time - this.startedAt >= FLIP_TIME);
   }
-  /** Stars of the round so far: 3 for FLIP_GOAL flips, 2 for FLIP_GOAL - 2, 1 for FLIP_GOAL - 4, else 0. */
+  /**
+   * Stars of the round: 0 unless it was won after at least one input of the player (`inputs`); then 3
+   * for FLIP_GOAL flips within FLIP_STAR_TIMES[0] s of the start, 2 within FLIP_STAR_TIMES[1] s, else 1.
+   */
   stars(): number {
-    const n = this.counter.count;
-    return n >= FLIP_GOAL ? 3 : n >= FLIP_GOAL - 2 ? 2 : n >= FLIP_GOAL - 4 ? 1 : 0;
+    if (this.wonAt < 0 || this.inputs === 0) return 0;
+    const t = this.wonAt - this.startedAt;
+    return t <= FLIP_STAR_TIMES[0] ? 3 : t <= FLIP_STAR_TIMES[1] ? 2 : 1;
   }
   /** Feeds the body's state after a step of `world` (nothing before the start or once the round is over). */
   update(world: PhysicsWorld, body: number): void {

@@ -745,15 +745,19 @@ describe('phone controls', () => {
     await g.close();
   }, 240_000);
 
-  it('rotating cube: the status row keeps its height through a round (the cube set on each pad by hand); won, every pad glows gold and the pop shows clear of the face net', async () => {
+  it('rotating cube: the status row keeps its height through a round (the cube set on each pad by hand); the ROLL tiles and their legend show with the pads that have them; won, every pad glows gold and the pop shows clear of the face net', async () => {
     const g = await h.openGame('rotating-cube', { ...PHONE, query: { seed: 11 } });
     await waitCubeAtRest(g);
     type Game = {
-      challenge(): { pad: number; pads: number[][]; faces: number[]; padsDoneAt: number };
+      challenge(): { pad: number; pads: number[][]; faces: number[]; beds: number[]; padsDoneAt: number };
       padState(): { goldOpacity: number };
       pop(): { count: number; text: string };
+      rules(): { legend: boolean; legendText: string; bedTiles: number };
     };
-    const { pads, faces } = await g.page.evaluate(() => (window.game as unknown as Game).challenge());
+    const { pads, faces, beds } = await g.page.evaluate(() => (window.game as unknown as Game).challenge());
+    // The layout's beds (scene.ts PAD_BEDS): the first pads have none, the last ones do.
+    expect(beds.some((b) => b > 0)).toBe(true);
+    expect(beds[0]).toBeLessThanOrEqual(0);
     /** The status row's height and the canvas's top, CSS px, once the row says `text`. */
     const geometry = async (text: string) => {
       await g.waitFor((t) => document.querySelector('[data-hud="challenge"]')?.textContent?.includes(t) ?? false, text);
@@ -764,6 +768,23 @@ describe('phone controls', () => {
     };
     const start = await geometry('(1 of 5)');
     for (let k = 0; k < pads.length; k++) {
+      // The lit pad's ROLL tiles are drawn, and the pads card's legend says what they mean, exactly
+      // while the lit pad has a bed; the legend stays on the screen.
+      const bed = beds[k]! > 0;
+      const card = await g.waitFor(
+        (b) => {
+          const r = (window.game as unknown as Game).rules();
+          return r.legend === b && r.bedTiles > 0 === b ? r : null;
+        },
+        bed,
+        60_000,
+      );
+      if (bed) {
+        expect(card.legendText).toContain('ROLL tiles: a slide stops at their edge');
+        const box = (await g.page.locator('[data-hud="bed-legend"]').boundingBox())!;
+        expect(box.x).toBeGreaterThanOrEqual(0);
+        expect(box.x + box.width).toBeLessThanOrEqual(390);
+      }
       // Beside the pad with another face up, then on it with the face it wants (the change of the top face is a roll).
       const want = faces[k]! >= 0 ? faces[k]! : 2;
       await placeCube(g, pads[k]![0]! + (pads[k]![0]! > 0 ? -1.2 : 1.2), pads[k]![1]!, want ^ 1);

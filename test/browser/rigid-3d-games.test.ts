@@ -25,7 +25,11 @@ interface Game3D {
   reset(): void;
   world: { steps: number; components: { Position: { x: Float64Array; y: Float64Array; z: Float64Array } } };
   renderer: {
-    stats: { shaped: number; shapes: { boxes: number; spheres: number; capsules: number; cylinders: number; hulls: number } };
+    stats: {
+      shaped: number;
+      custom: number;
+      shapes: { boxes: number; spheres: number; capsules: number; cylinders: number; hulls: number };
+    };
     drawnPosition(e: number): number[] | null;
   };
   app: { camera: { position: { clone(): { set(x: number, y: number, z: number): { project(c: unknown): { x: number; y: number } } } } } };
@@ -817,10 +821,13 @@ describe('3D rigid-body games in headless Chromium', () => {
         const game = window.game as unknown as Cube;
         game.paused = true;
         for (let i = 0; i < 150; i++) game.step();
-        return { y: game.world.components.Position.y[game.body()]!, walls: game.renderer.stats.shapes.boxes };
+        const stats = game.renderer.stats;
+        return { y: game.world.components.Position.y[game.body()]!, boxes: stats.shapes.boxes, custom: stats.custom };
       });
       expect(landed.y).toBeLessThan(0.6); // on the floor (a 1 m cube rests at 0.5 m)
-      expect(landed.walls).toBe(4); // the cube itself is drawn with its face colours
+      // Each drawn by a shape of its own: the cube with its face colours, the four walls in the room's
+      // stone (room-look.ts); none by the renderer's plain box shapes.
+      expect([landed.custom, landed.boxes]).toEqual([5, 0]);
       await g.press('Space');
       const up = await g.page.evaluate(() => {
         const game = window.game as unknown as Cube;

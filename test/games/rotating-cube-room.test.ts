@@ -24,6 +24,7 @@ import {
   FACES,
   FLIP_BAND,
   FLIP_GOAL,
+  FLIP_STAR_TIMES,
   FLIP_TIME,
   FlipChallenge,
   FlipCounter,
@@ -526,7 +527,7 @@ describe('rotating-cube challenges', () => {
         torqueCouple(h.body, () => pilot(world.time, Math.hypot(W.x[h.body]!, W.y[h.body]!, W.z[h.body]!))),
       );
       addSystem(world, 'finalize', (w) => flips.update(w, h.body));
-      flips.start(world.time); // the first input at the world's start
+      flips.input(world.time); // the first input at the world's start
       while (world.time < FLIP_TIME + 1) step(world);
       expect(flips.over(world)).toBe(true);
       return flips;
@@ -561,11 +562,68 @@ describe('rotating-cube challenges', () => {
     expect(kept.counter.count).toBe(FLIP_GOAL); // counting stops at the win
     expect(kept.wonAt).toBeGreaterThan(0);
     expect(kept.wonAt).toBeLessThan(FLIP_TIME);
-    expect(kept.stars()).toBe(3);
+    // Won by waiting once spun up: a win, but slow (measured 18.9 s), so one star, not three.
+    expect(kept.stars()).toBe(1);
     // The same with a 0.4 s pitch kick once in the band: the box tips off its intermediate axis and flips sooner.
     const kicked = run((t, w) => [t > 1.2 && t < 1.6 ? 0.5 : 0, w < (lo + hi) / 2 ? 0.5 : 0, 0]);
     expect(kicked.wonAt).toBeGreaterThan(0);
     expect(kicked.wonAt).toBeLessThan(kept.wonAt - 3);
+    expect(kicked.stars()).toBeGreaterThan(kept.stars());
+  });
+
+  it("the flip round's stars take the player's moves: none without input, at most two for a spin-up left to flip, three with a kick", () => {
+    // The game's keys torque about the default view's camera axes (view from (1, 0.7, 1.4)): yaw (D)
+    // about its up, pitch (W) about its right, 0.5 N m; a tap holds its key FLIP_TAP_TIME = 0.35 s.
+    const n = Math.hypot(1, 0.7, 1.4);
+    const back = [1 / n, 0.7 / n, 1.4 / n];
+    const rl = Math.hypot(back[2]!, back[0]!);
+    const right = [back[2]! / rl, 0, -back[0]! / rl];
+    const up = [back[1]! * right[2]!, back[2]! * right[0]! - back[0]! * right[2]!, -back[1]! * right[0]!];
+    /** A round from spin 6 with keys pitch and yaw (-1, 0 or 1) from `keys(t, spin)`; `input` counts the first input at t = 0. */
+    const round = (keys: (t: number, spin: number) => [number, number], input = true, spin = 6, perturbation = 0.01): FlipChallenge => {
+      const world = createPhysicsWorld(rotatingCubeWorldOptions('flip'));
+      const h = buildRotatingCube(world, { mode: 'flip', spin, perturbation });
+      const flips = new FlipChallenge();
+      const L = new Float64Array(3),
+        torque = [0, 0, 0];
+      addSystem(
+        world,
+        'forces',
+        torqueCouple(h.body, () => {
+          spinAngularMomentum(world, h.body, L);
+          const [pitch, yaw] = keys(world.time, flipSpin(Math.hypot(L[0]!, L[1]!, L[2]!)));
+          for (let i = 0; i < 3; i++) torque[i] = 0.5 * (pitch * right[i]! + yaw * up[i]!);
+          return torque;
+        }),
+      );
+      addSystem(world, 'finalize', (w) => flips.update(w, h.body));
+      if (input) flips.input(world.time);
+      else flips.start(world.time);
+      while (world.time < FLIP_TIME + 1 && flips.wonAt < 0) step(world);
+      return flips;
+    };
+    // No input: spun at 10 rad/s (in the band) and tipped 0.5 rad/s off its axis from the start, the
+    // box flips FLIP_GOAL times by itself; a round its clock started without the player (a test's start) wins no star.
+    const alone = round(() => [0, 0], false, 10, 0.5);
+    expect(alone.wonAt).toBeGreaterThan(0);
+    expect([alone.inputs, alone.stars()]).toEqual([0, 0]);
+    // Yaw held until the spin reaches s, then let go, for s across the band: won, but never under
+    // FLIP_STAR_TIMES[0] (measured at best 10.9 s), so two stars at most.
+    let wins = 0;
+    for (let s = 8.05; s < FLIP_BAND[1]; s += 0.3) {
+      const f = round((_, spin) => [0, spin < s ? 1 : 0]);
+      if (f.wonAt > 0) wins++;
+      expect(f.stars(), `let go at ${s.toFixed(2)} rad/s`).toBeLessThanOrEqual(2);
+      expect(f.stars()).toBe(f.wonAt < 0 ? 0 : f.wonAt <= FLIP_STAR_TIMES[1] ? 2 : 1);
+    }
+    expect(wins).toBeGreaterThan(5);
+    // The same spun up to 11 rad/s with one pitch tap (W, 0.35 s) at 0.75 s: won in 7.3 s (measured), three stars.
+    const kicked = round((t, spin) => [t > 0.75 && t < 1.1 ? 1 : 0, spin < 11 ? 1 : 0]);
+    expect(kicked.wonAt).toBeLessThan(FLIP_STAR_TIMES[0]);
+    expect(kicked.stars()).toBe(3);
+    // Lost rounds earn no star, however many flips they made.
+    const idle = round(() => [0, 0]);
+    expect([idle.wonAt, idle.stars()]).toEqual([-1, 0]);
   });
 });
 
