@@ -27,6 +27,9 @@
  *
  * No level can be cleared without steering: a layout in which an arrow, or two arrows at right angles,
  * held from the start would reach the line (`heldThrustClears`) is drawn again, up to LAYOUT_TRIES times.
+ * On levels of drifting holes the first hole across the straight path stays put (`LevelSpec.anchored`):
+ * else a player could wait at the pad for the drift to open the way up and clear it with one hold of ↑
+ * (test/games/black-hole-single-hold.test.ts).
  *
  * Holes keep M = c^2 r / (2 G) (their drawn radius is their Schwarzschild radius, as in ./rules).
  * Drifting holes move sideways at a constant speed and turn back at the field's edges; they are moved
@@ -76,6 +79,12 @@ export interface LevelSpec {
   readonly blockers: number;
   /** Sideways speed of the holes, m/s (0: they stay put). */
   readonly drift: number;
+  /**
+   * Whether the first blocker (across the straight path up) stays put while the other holes drift:
+   * the straight climb then meets it whenever it is started, so waiting at the pad for the drifting
+   * holes to clear the way and holding ↑ (the predicted path turned blue) never clears the level.
+   */
+  readonly anchored: boolean;
   /** Seconds of thrust the tank holds (Infinity: no limit). */
   readonly fuel: number;
   /**
@@ -221,7 +230,8 @@ const WALL_FILL_GAP = 0.4;
  * (horizons 0.5 to 0.85 m: a hole's pull matches the thrust within sqrt(c^2 r / (2 a)) of its centre,
  * which grows with r, so with level 1's 0.6 m holes grown to 1.1 m steering would lose to the pull on
  * level 4); level 5 a second hole across the path, the holes no bigger; from level 6 the holes
- * grow again step by step (to 1, 1.1, 1.2 m) and drift, slowly at first (0.35, then 0.6, 0.8 m/s);
+ * grow again step by step (to 1, 1.1, 1.2 m) and drift, slowly at first (0.35, then 0.6, 0.8 m/s),
+ * all but the first hole across the path (`anchored`: it stays put, in the smallest quarter of the radii);
  * from level 8 the fuel is limited (18 s, then 15 s down to 5 s); from level 9 a fifth hole, then a
  * hole more every second level (up to MAX_HOLES), bigger (radius up to 2 m) and faster (up to 3 m/s).
  * @throws RangeError unless level is an integer >= 1.
@@ -239,6 +249,7 @@ export function levelSpec(level: number): LevelSpec {
     fork = false,
     wallHeight: [number, number] = [10, 12],
     zigzag = false,
+    anchored = drift > 0 && blockers > 0,
   ): LevelSpec =>
     Object.freeze({
       level,
@@ -247,6 +258,7 @@ export function levelSpec(level: number): LevelSpec {
       corridor,
       blockers,
       drift,
+      anchored,
       fuel,
       gate,
       fork,
@@ -578,7 +590,10 @@ function layHoles(game: BlackHoleGame, run: LevelRun, spec: LevelSpec): void {
       bestR = r0,
       bestGap = -Infinity;
     for (let attempt = 0; attempt < 300; attempt++) {
-      const r = rng.range(r0, r1);
+      // The anchored blocker (`LevelSpec.anchored`) is always in the way, so it is drawn in the
+      // smallest quarter of the radii: steering round it leaves room for the drifting holes.
+      const drawn = rng.range(r0, r1);
+      const r = spec.anchored && k === 0 ? r0 + 0.25 * (drawn - r0) : drawn;
       let x: number, y: number;
       if (spec.fork) {
         // The fork: the first hole across the straight path up, 12 to 14 m above the start (on the
@@ -651,7 +666,8 @@ function layHoles(game: BlackHoleGame, run: LevelRun, spec: LevelSpec): void {
     game.holes.push(e);
     game.holeRadius.push(bestR);
     game.holeMass.push(mass);
-    run.holeVx.push(spec.drift * (rng.range(0, 1) < 0.5 ? -1 : 1));
+    const vx = spec.drift * (rng.range(0, 1) < 0.5 ? -1 : 1);
+    run.holeVx.push(spec.anchored && k === 0 ? 0 : vx);
   }
   game.version++;
 }
