@@ -919,6 +919,17 @@ function fitMessage(lines: readonly string[]): void {
   }
 }
 
+/**
+ * The replay's clock, s of game time: in levels the replayed attempt's own clock (from its first
+ * thrust, 0 while the ship waits on the pad; at a clear the time the level's summary gives), so the
+ * waits a replay skips are not counted; in the classic game (no waits skipped) the steps played.
+ */
+function replayClock(): number {
+  if (!replay.player) return 0;
+  if (!run) return replay.player.played * bh.world.dt;
+  return run.parked && !run.waiting ? 0 : run.time - run.attemptStart;
+}
+
 function updateStatus(force = false): void {
   // The classic game's hole count follows the field (a crossing adds a hole).
   if (!levels && params.holes !== bh.holes.length && bh.holes.length > 0) {
@@ -930,19 +941,20 @@ function updateStatus(force = false): void {
   const parts: Array<[string, boolean]> = run
     ? [
         [`Level ${run.spec.level}`, false],
-        [lives, false],
+        [lives, replay.player !== null],
         // The holes on the field (none while the next level waits to begin).
         [run.waiting ? '' : `Holes ${bh.holes.length}`, true],
         [`Score ${bh.score}`, false],
         [`Best ${Math.max(best, bh.score)}`, true],
-        [Number.isFinite(run.fuelLeft) ? `Fuel ${run.fuelLeft.toFixed(1)} s` : '', false],
+        // In a replay the fuel may go (then the lives) so the replay's clock fits a phone's line.
+        [Number.isFinite(run.fuelLeft) ? `Fuel ${run.fuelLeft.toFixed(1)} s` : '', replay.player !== null],
       ]
     : [
         [lives, false],
         [`Score ${bh.score} (1 a hole)`, false],
         [`Holes ${bh.holes.length}`, true],
       ];
-  if (replay.player) parts.push([`▶ Replay ${(replay.player.played * bh.world.dt).toFixed(0)} s`, false]);
+  if (replay.player) parts.push([`▶ Replay ${replayClock().toFixed(1)} s`, false]);
   const n = parts.map(([p]) => p).join('|');
   if (force || n !== shownNumbers) {
     shownNumbers = n;
