@@ -2253,6 +2253,8 @@ shell.expose({
   dotsIn: (l: number, t: number, r: number, b: number): number => dotsIn(l, t, r, b, 0),
   /** The game-over card's lines while it shows (the final score and the best), else ''. */
   overCard: (): string => (overCard.isConnected ? [overTitle, overScore, overBest].map((e) => e.textContent).join('\n') : ''),
+  /** The replay's clock, s of game time (`replayClock`: the replayed attempt's, as the status line shows it; 0 when none plays). */
+  replayClock: (): number => replayClock(),
   /** Particles drawn in the last frame (exhaust). */
   particleCount: (): number => renderer.particles!.stats.particles,
 });
