@@ -26,7 +26,11 @@
  * nothing appears on the field while the ship waits.
  *
  * No level can be cleared without steering: a layout in which an arrow, or two arrows at right angles,
- * held from the start would reach the line (`heldThrustClears`) is drawn again, up to LAYOUT_TRIES times.
+ * held from the start would reach the line, or (from level 4) a hold of ↑ of 0.5 to 3 s let go would
+ * (`heldThrustClears`), is drawn again, up to LAYOUT_TRIES times.
+ * On levels of drifting holes the first hole across the straight path stays put (`LevelSpec.anchored`):
+ * else a player could wait at the pad for the drift to open the way up and clear it with one hold of ↑
+ * (test/games/black-hole-single-hold.test.ts).
  *
  * Holes keep M = c^2 r / (2 G) (their drawn radius is their Schwarzschild radius, as in ./rules).
  * Drifting holes move sideways at a constant speed and turn back at the field's edges; they are moved
@@ -76,6 +80,12 @@ export interface LevelSpec {
   readonly blockers: number;
   /** Sideways speed of the holes, m/s (0: they stay put). */
   readonly drift: number;
+  /**
+   * Whether the first blocker (across the straight path up) stays put while the other holes drift:
+   * the straight climb then meets it whenever it is started, so waiting at the pad for the drifting
+   * holes to clear the way and holding ↑ (the predicted path turned blue) never clears the level.
+   */
+  readonly anchored: boolean;
   /** Seconds of thrust the tank holds (Infinity: no limit). */
   readonly fuel: number;
   /**
@@ -221,7 +231,8 @@ const WALL_FILL_GAP = 0.4;
  * (horizons 0.5 to 0.85 m: a hole's pull matches the thrust within sqrt(c^2 r / (2 a)) of its centre,
  * which grows with r, so with level 1's 0.6 m holes grown to 1.1 m steering would lose to the pull on
  * level 4); level 5 a second hole across the path, the holes no bigger; from level 6 the holes
- * grow again step by step (to 1, 1.1, 1.2 m) and drift, slowly at first (0.35, then 0.6, 0.8 m/s);
+ * grow again step by step (to 1, 1.1, 1.2 m) and drift, slowly at first (0.35, then 0.6, 0.8 m/s),
+ * all but the first hole across the path (`anchored`: it stays put, in the smallest quarter of the radii);
  * from level 8 the fuel is limited (18 s, then 15 s down to 5 s); from level 9 a fifth hole, then a
  * hole more every second level (up to MAX_HOLES), bigger (radius up to 2 m) and faster (up to 3 m/s).
  * @throws RangeError unless level is an integer >= 1.
@@ -239,6 +250,7 @@ export function levelSpec(level: number): LevelSpec {
     fork = false,
     wallHeight: [number, number] = [10, 12],
     zigzag = false,
+    anchored = drift > 0 && blockers > 0,
   ): LevelSpec =>
     Object.freeze({
       level,
@@ -247,6 +259,7 @@ export function levelSpec(level: number): LevelSpec {
       corridor,
       blockers,
       drift,
+      anchored,
       fuel,
       gate,
       fork,
@@ -423,13 +436,25 @@ const HELD_THRUSTS: readonly Thrust[] = ['up', 'up-left', 'up-right', 'left', 'r
 /**
  * The first thrust of an arrow, or of two arrows at right angles, that held from the start (the ship
  * at rest there, its engine idle) and never changed reaches the line within HELD_SECONDS before it
- * falls in or leaves the field (`heldFlight` says 'cleared'); null if none does. The game itself is
- * not changed.
+ * falls in or leaves the field (`heldFlight` says 'cleared'), else (from level 4: no practice, wall
+ * or zig-zag) 'up' if ↑ held for one of SHORT_HOLDS and let go does; null if none does. The game
+ * itself is not changed.
  */
 export function heldThrustClears(game: BlackHoleGame, run: LevelRun): Thrust | null {
   for (const t of HELD_THRUSTS) if (heldFlight(game, run, t).end === 'cleared') return t;
+  // Short holds on the levels of holes laid across the path (4 on): the zig-zag's small holes let
+  // most short holds through on every layout, and levels 1 and 2 never do.
+  if (run.spec.zigzag || run.spec.gate > 0 || run.spec.practice) return null;
+  for (const hold of SHORT_HOLDS) if (heldFlight(game, run, 'up', undefined, hold).end === 'cleared') return 'up';
   return null;
 }
+
+/**
+ * Lengths of a hold of ↑ from the start then let go, s, that the layout check (`heldThrustClears`)
+ * also flies: a hold of 0.5 to 3 s and a coast, bent round a blocker by the holes' pull, cleared
+ * some layouts that no thrust held throughout clears.
+ */
+const SHORT_HOLDS: readonly number[] = Object.freeze(Array.from({ length: 11 }, (_, i) => 0.5 + 0.25 * i));
 
 /** How a held flight (`heldFlight`) ended, after how many steps, and where the ship was then (m). */
 export interface HeldFlight {
@@ -460,10 +485,13 @@ export interface HeldFlight {
  * sums the pulls in its own order of the holes, so the two paths agree to rounding
  * (test/games/black-hole-levels.test.ts flies them side by side).
  *
- * `path`, when given, receives the ship's x, y after each step (as many steps as it holds).
- * @throws RangeError unless the game's world steps as assumed (semi-implicit Euler, one substep).
+ * `path`, when given, receives the ship's x, y after each step (as many steps as it holds). `hold`, s
+ * (> 0; default Infinity): the thrust is let go after round(hold / dt) steps (the engine then dies
+ * away as `rampThrust` lets it), as a press of that length would.
+ * @throws RangeError unless the game's world steps as assumed (semi-implicit Euler, one substep) and hold > 0.
  */
-export function heldFlight(game: BlackHoleGame, run: LevelRun, thrust: Thrust, path?: Float64Array): HeldFlight {
+export function heldFlight(game: BlackHoleGame, run: LevelRun, thrust: Thrust, path?: Float64Array, hold = Infinity): HeldFlight {
+  if (!(hold > 0)) throw new RangeError(`heldFlight: hold must be > 0 s, got ${hold}`);
   const world = game.world;
   if (world.integrator !== 'semi-implicit-euler' || world.substeps !== 1)
     throw new RangeError(
@@ -501,7 +529,8 @@ export function heldFlight(game: BlackHoleGame, run: LevelRun, thrust: Thrust, p
     y = game.start[1],
     vx = 0,
     vy = 0;
-  const steps = HELD_SECONDS / dt;
+  const steps = HELD_SECONDS / dt,
+    release = Math.round(hold / dt);
   let k = 0;
   if (held === 'none') {
     // No thrust left once the pad takes its downward part: the ship stays parked (`stepLevel`).
@@ -528,7 +557,8 @@ export function heldFlight(game: BlackHoleGame, run: LevelRun, thrust: Thrust, p
       fx = fx + f * dx;
       fy = fy + f * dy;
     }
-    rampThrust(engine, tx, ty, a, dt, sideRamp);
+    if (k < release) rampThrust(engine, tx, ty, a, dt, sideRamp);
+    else rampThrust(engine, 0, 0, a, dt, sideRamp);
     if (engine[0] !== 0 || engine[1] !== 0) {
       fx = fx + SHIP_MASS * engine[0] * sideThrustShare(engine[0], vx, ty === 0 ? sideSpeed : Infinity);
       fy = fy + SHIP_MASS * engine[1];
@@ -578,7 +608,10 @@ function layHoles(game: BlackHoleGame, run: LevelRun, spec: LevelSpec): void {
       bestR = r0,
       bestGap = -Infinity;
     for (let attempt = 0; attempt < 300; attempt++) {
-      const r = rng.range(r0, r1);
+      // The anchored blocker (`LevelSpec.anchored`) is always in the way, so it is drawn in the
+      // smallest quarter of the radii: steering round it leaves room for the drifting holes.
+      const drawn = rng.range(r0, r1);
+      const r = spec.anchored && k === 0 ? r0 + 0.25 * (drawn - r0) : drawn;
       let x: number, y: number;
       if (spec.fork) {
         // The fork: the first hole across the straight path up, 12 to 14 m above the start (on the
@@ -651,7 +684,8 @@ function layHoles(game: BlackHoleGame, run: LevelRun, spec: LevelSpec): void {
     game.holes.push(e);
     game.holeRadius.push(bestR);
     game.holeMass.push(mass);
-    run.holeVx.push(spec.drift * (rng.range(0, 1) < 0.5 ? -1 : 1));
+    const vx = spec.drift * (rng.range(0, 1) < 0.5 ? -1 : 1);
+    run.holeVx.push(spec.anchored && k === 0 ? 0 : vx);
   }
   game.version++;
 }

@@ -191,10 +191,6 @@ const PATH_STEPS = 180;
 const PAD_PATH_STEPS = 180;
 const path = new Float64Array(2 * (Math.max(PATH_STEPS, PAD_PATH_STEPS) + 1));
 let pathPoints = 0;
-/** The diagonal holds whose paths the pad also shows before the first thrust (fainter than ↑'s). */
-const PAD_SIDE_THRUSTS = ['up-left', 'up-right'] as const;
-/** Points of one of those paths, m (x0, y0, x1, y1, ...). */
-const sidePath = new Float64Array(2 * (PAD_PATH_STEPS + 1));
 /** Room in `dots` for the points that mark the holes for the coach to keep off (`addHoleDots`). */
 const HOLE_DOTS = 600;
 /**
@@ -745,13 +741,14 @@ const pad = createButtonBar(
   { label: 'thrust buttons', touchOnly: false },
 );
 pad.element.classList.add('bh-pad');
-// Touch: the keys' other actions, F (path on / off) and V (replay), as buttons beside the pad.
+// The keys' other actions, F (path on / off) and V (replay), as buttons beside the pad (on the
+// desktop too, where the keys alone were missed).
 const extras = createButtonBar(
   [
     { label: 'Path', name: 'predicted path on / off (F)', key: 'f' },
     { label: 'Replay', name: 'replay the run (V)', key: 'v' },
   ],
-  { label: 'path and replay' },
+  { label: 'path and replay', touchOnly: false },
 );
 extras.element.classList.add('bh-extras');
 for (const [i, dir] of DIRS.entries()) pad.buttons[i]!.dataset.dir = dir;
@@ -922,6 +919,17 @@ function fitMessage(lines: readonly string[]): void {
   }
 }
 
+/**
+ * The replay's clock, s of game time: in levels the replayed attempt's own clock (from its first
+ * thrust, 0 while the ship waits on the pad; at a clear the time the level's summary gives), so the
+ * waits a replay skips are not counted; in the classic game (no waits skipped) the steps played.
+ */
+function replayClock(): number {
+  if (!replay.player) return 0;
+  if (!run) return replay.player.played * bh.world.dt;
+  return run.parked && !run.waiting ? 0 : run.time - run.attemptStart;
+}
+
 function updateStatus(force = false): void {
   // The classic game's hole count follows the field (a crossing adds a hole).
   if (!levels && params.holes !== bh.holes.length && bh.holes.length > 0) {
@@ -933,19 +941,20 @@ function updateStatus(force = false): void {
   const parts: Array<[string, boolean]> = run
     ? [
         [`Level ${run.spec.level}`, false],
-        [lives, false],
+        [lives, replay.player !== null],
         // The holes on the field (none while the next level waits to begin).
         [run.waiting ? '' : `Holes ${bh.holes.length}`, true],
         [`Score ${bh.score}`, false],
         [`Best ${Math.max(best, bh.score)}`, true],
-        [Number.isFinite(run.fuelLeft) ? `Fuel ${run.fuelLeft.toFixed(1)} s` : '', false],
+        // In a replay the fuel may go (then the lives) so the replay's clock fits a phone's line.
+        [Number.isFinite(run.fuelLeft) ? `Fuel ${run.fuelLeft.toFixed(1)} s` : '', replay.player !== null],
       ]
     : [
         [lives, false],
         [`Score ${bh.score} (1 a hole)`, false],
         [`Holes ${bh.holes.length}`, true],
       ];
-  if (replay.player) parts.push([`▶ Replay ${(replay.player.played * bh.world.dt).toFixed(0)} s`, false]);
+  if (replay.player) parts.push([`▶ Replay ${replayClock().toFixed(1)} s`, false]);
   const n = parts.map(([p]) => p).join('|');
   if (force || n !== shownNumbers) {
     shownNumbers = n;
@@ -1896,6 +1905,23 @@ function drawPauseLine(show: boolean): void {
   pauseLine.position.set(x, y);
 }
 
+/**
+ * Moves the path's words (`pathHint`, `pathLabel`) that overlap the pause's words this frame to just
+ * under them and the finish line: a path that reaches the line ends in the pause's band, where its
+ * words were drawn over "Paused".
+ */
+function keepOffPauseLine(): void {
+  if (!pauseLine.visible) return;
+  const p = pauseLine.getBounds();
+  // Under the words and under the finish line, which lies just beneath them.
+  const below = Math.max(p.y + p.height, renderer.camera.toScreenY(bh.lineY) + 2) + 4;
+  for (const t of [pathHint, pathLabel]) {
+    if (!t.visible) continue;
+    const b = t.getBounds();
+    if (b.x < p.x + p.width && p.x < b.x + b.width && b.y < p.y + p.height && p.y < b.y + b.height) t.y += below - b.y;
+  }
+}
+
 /** Gap kept between the touch card and the field's frame and the finish line, px. */
 const HINT_LINE_GAP = 6;
 /**
@@ -2022,22 +2048,9 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     const fromPad = (run ? run.parked && canThrust(bh, run) : bh.parked) && bh.thrust === 'none';
     const steps = fromPad ? PAD_PATH_STEPS : PATH_STEPS;
     if (fromPad) {
-      // Beside the path holding ↑, fainter: the paths holding ↖ and ↗, so the pad shows which way
-      // round the hole ahead is open (one red path straight up said only where not to go).
-      for (const side of PAD_SIDE_THRUSTS) {
-        bh.thrust = side;
-        const n = predictPath(bh, predictor, sidePath, steps, run?.holeVx);
-        const kind = pathEnd(bh, sidePath, n, steps);
-        let line = false;
-        for (let i = 0; i < n && !line; i++) line = sidePath[2 * i + 1]! >= bh.lineY;
-        const c = kind !== 'clear' ? PATH_WARN : line ? PATH_CLEAR : PATH_OPEN;
-        for (let i = 3; i < n; i += 4) {
-          const dx = cam.toScreenX(sidePath[2 * i]!),
-            dy = cam.toScreenY(sidePath[2 * i + 1]!);
-          overlay.circle(dx, dy, 1.6).fill({ color: c, alpha: 0.35 });
-          addDot(dx, dy);
-        }
-      }
+      // Only the path holding ↑: the paths of held diagonals are red on every layout (./levels.ts
+      // `heldThrustClears` draws again where one clears), so drawn beside it they said nothing a
+      // player could read.
       bh.thrust = 'up';
       pathPoints = predictPath(bh, predictor, path, steps, run?.holeVx);
     } else pathPoints = predictPath(bh, predictor, path, steps, run?.holeVx, thrustStepsLeft());
@@ -2091,6 +2104,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   // One message at a time: paused over a fall's words (which then say it) or the game-over card, the
   // pause's own words are not drawn (the shade still dims the field).
   drawPauseLine(shell.paused && !deathText.visible && !bh.over);
+  keepOffPauseLine();
   const age = performance.now() - swallow.start;
   if (swallow.active && age > SWALLOW_MS) swallow.active = false;
   if (swallow.active) {
@@ -2239,6 +2253,8 @@ shell.expose({
   dotsIn: (l: number, t: number, r: number, b: number): number => dotsIn(l, t, r, b, 0),
   /** The game-over card's lines while it shows (the final score and the best), else ''. */
   overCard: (): string => (overCard.isConnected ? [overTitle, overScore, overBest].map((e) => e.textContent).join('\n') : ''),
+  /** The replay's clock, s of game time (`replayClock`: the replayed attempt's, as the status line shows it; 0 when none plays). */
+  replayClock: (): number => replayClock(),
   /** Particles drawn in the last frame (exhaust). */
   particleCount: (): number => renderer.particles!.stats.particles,
 });

@@ -172,6 +172,98 @@ describe('black hole', () => {
   });
 });
 
+describe('black hole, the replay clock and the paused path words', () => {
+  it("the replay's clock is the attempt's game time: the wait on the pad it skips is not counted", async () => {
+    type Bh = BlackHolePage & {
+      paused: boolean;
+      reset(): void;
+      step(): void;
+      replayClock(): number;
+      replay: { player: unknown; play(): void };
+      level: { parked: boolean; time: number; attemptStart: number };
+    };
+    // Paused, stepped by hand: 2 s parked on the pad, ↑ pressed for 0.5 s, 0.5 s more of flight.
+    const run = await g.page.evaluate(() => {
+      const w = window.game as unknown as Bh;
+      w.reset();
+      w.paused = true;
+      for (let i = 0; i < 120; i++) w.step();
+      window.dispatchEvent(new KeyboardEvent('keydown', { key: 'ArrowUp', code: 'ArrowUp' }));
+      for (let i = 0; i < 30; i++) w.step();
+      window.dispatchEvent(new KeyboardEvent('keyup', { key: 'ArrowUp', code: 'ArrowUp' }));
+      for (let i = 0; i < 30; i++) w.step();
+      const live = w.level.time - w.level.attemptStart;
+      // The replay of it, stepped to its end: its clock at lift-off and at the end.
+      w.replay.play();
+      let atLiftOff = -1,
+        last = -1;
+      for (let i = 0; i < 400 && w.replay.player; i++) {
+        w.step();
+        if (w.replay.player) last = w.replayClock();
+        if (atLiftOff < 0 && !w.level.parked) atLiftOff = w.replayClock();
+      }
+      return { live, atLiftOff, last, done: w.replay.player === null };
+    });
+    expect(run.done).toBe(true);
+    // The attempt flew 1 s (60 steps of 1/60 s); counted with the skipped wait it showed 3 s and more.
+    expect(run.live).toBeCloseTo(1, 6);
+    expect(run.atLiftOff).toBeLessThan(0.05);
+    expect(Math.abs(run.last - run.live)).toBeLessThanOrEqual(1 / 60 + 1e-9);
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as Bh;
+      w.reset();
+      w.paused = false;
+    });
+    expect(g.errors).toEqual([]);
+  });
+
+  it('paused, the words of a path that reaches the line stand clear of "Paused", under the finish line', async () => {
+    type Bh = BlackHolePage & {
+      paused: boolean;
+      reset(): void;
+      pathHint(): string;
+      textBox(name: string): number[];
+      pauseWordsBox(): number[];
+      pauseOverlay(): { visible: boolean; words: boolean };
+      renderer: { camera: { toScreenY(y: number): number } };
+      bh: { ship: number; lineY: number; world: { components: Record<string, { x: Float64Array; y: Float64Array }> } };
+      level: { parked: boolean };
+    };
+    // The ship 6 m under the line, flying up at 4 m/s, right of the middle: its path reaches the line
+    // in the band where "Paused" stands (the words by its end were drawn over it).
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as Bh;
+      w.reset();
+      const c = w.bh.world.components,
+        s = w.bh.ship % 2 ** 25;
+      c.Position!.x[s] = c.PreviousPosition!.x[s] = 22;
+      c.Position!.y[s] = c.PreviousPosition!.y[s] = w.bh.lineY - 6;
+      c.Velocity!.x[s] = 0;
+      c.Velocity!.y[s] = 4;
+      w.level.parked = false;
+      w.paused = true;
+    });
+    const boxes = await g.waitFor(() => {
+      const w = window.game as unknown as Bh;
+      const o = w.pauseOverlay();
+      return o.visible && o.words && w.pathHint() !== ''
+        ? { hint: w.textBox('pathHint'), pause: w.pauseWordsBox(), line: w.renderer.camera.toScreenY(w.bh.lineY), text: w.pathHint() }
+        : null;
+    }, null);
+    expect(boxes.text).toBe('predicted path: reaches the line');
+    const [l, t, r, b] = boxes.hint;
+    const [pl, pt, pr, pb] = boxes.pause;
+    expect(l! < pr! && pl! < r! && t! < pb! && pt! < b!, JSON.stringify(boxes)).toBe(false);
+    expect(t!).toBeGreaterThanOrEqual(boxes.line);
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as Bh;
+      w.reset();
+      w.paused = false;
+    });
+    expect(g.errors).toEqual([]);
+  });
+});
+
 describe('black hole, the ready moment', () => {
   it('after a fall the new ship waits a second of the wall clock, however many steps a slow frame runs meanwhile; an arrow pressed then thrusts once it ends', async () => {
     type Bh = BlackHolePage & {
@@ -836,16 +928,17 @@ describe.each([
       (window.game as unknown as Bh).paused = true;
     });
     // Path off and on, and the replay of the run so far (the tap; it waits while paused): the buttons on a
-    // phone, F and V on the desktop.
-    const act = async (key: string, name: string) => {
+    // phone; on the desktop F, then the buttons (Path and Replay show there too: the keys alone were missed).
+    const act = async (key: string, name: string, click = false) => {
       if (touch) await p.page.getByRole('button', { name, exact: true }).tap();
+      else if (click) await p.page.getByRole('button', { name, exact: true }).click();
       else await p.page.keyboard.press(key);
     };
     await act('f', 'predicted path on / off (F)');
     await p.waitFor(() => !(window.game as unknown as Bh).params.path, null);
-    await act('f', 'predicted path on / off (F)');
+    await act('f', 'predicted path on / off (F)', true);
     await p.waitFor(() => (window.game as unknown as Bh).params.path, null);
-    await act('v', 'replay the run (V)');
+    await act('v', 'replay the run (V)', true);
     await p.waitFor(() => (window.game as unknown as Bh).replay.player !== null, null);
     // The ship mid-field, moving: paused, the path is the course at the pause; an arrow held (or a
     // thrust set) while paused does not redraw it; resumed, the thrust bends it.

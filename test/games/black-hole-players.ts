@@ -251,3 +251,33 @@ export function levelFigures(level: number, style: PlayerStyle, seeds: number, l
     totalTime: cleared ? totalTime / cleared : Number.NaN,
   };
 }
+
+/** How a single hold (`singleHold`) ended: 'cleared' reached the line, 'fell', 'lost' (left the field) or 'timeout'. */
+export type HoldEnd = 'cleared' | 'fell' | 'lost' | 'timeout';
+
+/**
+ * The one-hold player the strangers found clears late levels with the predicted path shown: on level
+ * `level` of a game of seed `seed` on `field` (default the game's 32 x 24 m), ↑ pressed `wait` s
+ * after the level began (the holes drift meanwhile: a player waits for the path to turn blue), held
+ * `hold` s (> 0) and let go, then nothing else pressed, the game stepped (`stepLevel`) until the
+ * line is crossed, the ship falls in or leaves the field, or `limit` s of game time pass.
+ * @throws RangeError unless hold > 0 and limit > hold.
+ */
+export function singleHold(level: number, seed: number, hold: number, field?: FieldSize, wait = 0, limit = 20): HoldEnd {
+  if (!(hold > 0 && wait >= 0 && limit > wait + hold))
+    throw new RangeError(`singleHold: hold must be > 0 s, wait >= 0 s and limit > wait + hold, got ${hold}, ${wait}, ${limit}`);
+  const g = createBlackHoleGame({ seed, lives: 9, ...(field ? { field } : {}) });
+  const run = startLevel(g, level);
+  const dt = g.world.dt;
+  const from = Math.round(wait / dt),
+    to = from + Math.round(hold / dt);
+  for (let k = 0; k * dt < limit; k++) {
+    const want: Thrust = k >= from && k < to && canThrust(g, run) ? 'up' : 'none';
+    if (g.thrust !== want) setThrust(g, want);
+    const event = stepLevel(g, run);
+    if (event === 'cleared') return 'cleared';
+    if (event === 'fell' || event === 'over') return 'fell';
+    if (event === 'lost') return 'lost';
+  }
+  return 'timeout';
+}
