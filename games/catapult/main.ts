@@ -307,13 +307,14 @@ const downShare = (): number => {
   return c.of === 0 ? 1 : c.down / c.of;
 };
 /**
- * What "down" means, as the player is told: the rule of scene.ts hasFallen (FALL_DROP, TIP_ANGLE,
- * KNOCK_DISTANCE) and countsTowardStars, in words; a piece down turns darker.
+ * What "down" means, as the player is told: the rule of scene.ts hasFallen (a drop of DROP_SHARE of a
+ * piece's height, a lean past TIP_ANGLE, a knock of KNOCK_DISTANCE) and countsTowardStars, in words;
+ * a piece down turns darker.
  */
-const DOWN_RULE = 'Down: dropped, tipped or knocked 1 m (it darkens); a flat bottom row does not count';
-const DOWN_RULE_SHORT = 'Down: dropped, tipped or knocked 1 m (darkens); not a flat bottom row';
+const DOWN_RULE = 'Down: fallen, leaning 30° or knocked aside (it darkens); a flat bottom row does not count';
+const DOWN_RULE_SHORT = 'Down: fallen, leaning 30° or knocked aside (darkens); not a flat bottom row';
 /** The same rule in the controls' help (after a "Stars" cap): what the stars count. */
-const DOWN_HELP = 'count pieces down (they darken): dropped, tipped or knocked 1 m; not a flat bottom row';
+const DOWN_HELP = 'count pieces down (they darken): fallen, leaning 30° or knocked aside; not a flat bottom row';
 /**
  * The banner's type size on an upright phone, px: with the short rules a level's start is two lines
  * on a 390 px phone.
