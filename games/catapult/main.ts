@@ -48,7 +48,21 @@ import {
   type View,
 } from './camera';
 import { type DebrisKind, Effects } from './effects';
-import { CATAPULT, cupAt, drawBrick, drawCatapult, drawGlass, drawHill, drawMound, drawPit, drawStone, drawWood, mixColor } from './look';
+import {
+  CATAPULT,
+  cupAt,
+  drawBrick,
+  drawCatapult,
+  drawGlass,
+  drawHill,
+  drawMound,
+  drawPit,
+  drawShot,
+  drawStone,
+  drawWood,
+  mixColor,
+  SHOT_COLOR,
+} from './look';
 import {
   angleForRange,
   buildLevel,
@@ -808,7 +822,7 @@ function fire(dx: number, dy: number): number {
   if (levelEnded || shotsLeft <= 0 || Math.hypot(dx, dy) < 0.3) return 0;
   const [vx, vy] = launchVelocity(dx, dy);
   const ball = launch(shell.world, vx, vy, params.projectileMass);
-  renderer.setColor(ball, 0x3d434d);
+  renderer.setColor(ball, SHOT_COLOR);
   shots.push(ball);
   if (!DEMO) hideHowTo();
   shotsLeft--;
@@ -1306,18 +1320,15 @@ function drawAmmo(): void {
   const inCup = loaded();
   if (inCup) {
     const [, , x, y] = cupAt(arm.angle, PROJECTILE_RADIUS);
-    drawStone(overlay, cam, x, y, 0.6, PROJECTILE_RADIUS, STONE_COLOR);
+    drawShot(overlay, cam, x, y, 0.6, PROJECTILE_RADIUS);
   }
   const pile = shotsLeft - (inCup ? 1 : 0);
   for (let k = 0; k < pile; k++) {
     const row = k < 3 ? 0 : 1,
       col = row === 0 ? k : k - 3;
-    drawStone(overlay, cam, -1.75 - 0.5 * col - 0.25 * row, 0.24 + 0.42 * row, 1.3 * k, 0.24, STONE_COLOR);
+    drawShot(overlay, cam, -1.75 - 0.5 * col - 0.25 * row, 0.24 + 0.42 * row, 1.3 * k, 0.24);
   }
 }
-
-/** The thrown stones' colour. */
-const STONE_COLOR = 0x6b6660;
 
 /**
  * Draws the castle's pieces (wood, glass, stones) over their plain shapes, where and as turned as the
@@ -1363,7 +1374,7 @@ function drawPieces(world: PhysicsWorld, alpha: number): void {
   }
   for (const b of shots) {
     if (!place(b)) continue;
-    drawStone(overlay, cam, at.x, at.y, angleOf(b), PROJECTILE_RADIUS, STONE_COLOR);
+    drawShot(overlay, cam, at.x, at.y, angleOf(b), PROJECTILE_RADIUS);
   }
 }
 
