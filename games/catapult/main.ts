@@ -579,8 +579,8 @@ const rockRight = (): number => rockRightOf(lv.castleMaxX);
  * before the camera eases to the castle; a press to aim shows the whole field again.
  */
 const OPENING = 2.5;
-/** Whether the screen is a desktop's: wide enough (NARROW) and not an upright phone's; its views are ./camera wideViews. */
-const desktop = (): boolean => renderer.camera.width >= NARROW && !upright();
+/** Whether the screen is a desktop's: wide enough (NARROW) and not taller than 1.2 x its width (an upright tablet keeps the tall views); its views are ./camera wideViews. */
+const desktop = (): boolean => renderer.camera.width >= NARROW && renderer.camera.height <= 1.2 * renderer.camera.width;
 /**
  * A desktop's views (./camera wideViews): their foot 0.6 m under the lowest surface and at least 1 m
  * under the ground, lower still by the touch hint's height while it shows (at the play area's scale).
