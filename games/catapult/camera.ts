@@ -9,7 +9,7 @@
  * behind it, close: a phone's look button, and a finished level's wreck).
  *
  * On a desktop the views are `wideViews`: the whole field (the catapult and the castle) for the
- * level's opening and while the player pulls, the castle close between throws.
+ * level's start until its first throw and while the player pulls, the castle close between throws.
  *
  * Upright, an aim view fitted to the catapult and the castle draws the castle small (14 to 22 px a
  * metre at 390 px wide); the page shows it again, close, in the earth under the ground while the
@@ -173,7 +173,7 @@ const CASTLE_BEFORE = 1.2,
 
 /** The views of a wide screen (see `wideViews`). */
 export interface WideViews {
-  /** The catapult and the whole castle: the level's opening and a pull under way, so the player sees what they aim at. */
+  /** The catapult and the whole castle: until the level's first throw and while a pull is under way, so the player sees what they aim at. */
   field: View;
   /** The castle and the rock behind it, close: at rest between throws, a throw's end and a finished level's wreck. */
   castle: View;

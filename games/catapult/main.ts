@@ -127,8 +127,6 @@ let shotsLeft = 0;
 let shots: number[] = [];
 let best: Tally = { fallen: 0, broken: 0, score: 0 };
 let lastShotTime = 0;
-/** World time of the level's start (its world made and settled), s. */
-let levelStart = 0;
 
 /**
  * The last throw, so a player sees what it did: its path (x, y pairs, m) stays on screen as a trail
@@ -190,7 +188,6 @@ function createWorld(): PhysicsWorld {
   const world = createPhysicsWorld(worldOptions(params));
   lv = buildLevel(world, { level: params.level - 1, seed: params.seed, gravity: params.gravity, jointStrength: params.jointStrength });
   shotsLeft = lv.shots;
-  levelStart = world.time;
   shots = [];
   best = { fallen: 0, broken: 0, score: 0 };
   lastShotTime = 0;
@@ -484,8 +481,8 @@ shell.onWorldChange(() => {
 
 /**
  * The camera has two views. The aim view: on a desktop (./camera wideViews) the field view, the
- * catapult and the whole castle with the ground a fifth of the way up, for the level's opening
- * (OPENING s) and while a pull is under way, and between throws the castle view, the castle and the
+ * catapult and the whole castle with the ground a fifth of the way up, until the level's first
+ * throw and while a pull is under way, and between throws the castle view, the castle and the
  * rock fitted to the play area's height (the whole field fitted to the width drew them in the
  * bottom fifth under empty sky); on a sideways phone the whole play area, from just behind the
  * catapult to just past the rock, fitted to the screen's width (a drag aims from anywhere). The
@@ -574,11 +571,6 @@ function field(): Field {
 }
 /** The right face of the rock behind the castle, m. */
 const rockRight = (): number => rockRightOf(lv.castleMaxX);
-/**
- * On a desktop, how long the level's opening shows the whole field (the catapult and the castle), s,
- * before the camera eases to the castle; a press to aim shows the whole field again.
- */
-const OPENING = 2.5;
 /** Whether the screen is a desktop's: wide enough (NARROW) and not taller than 1.2 x its width (an upright tablet keeps the tall views); its views are ./camera wideViews. */
 const desktop = (): boolean => renderer.camera.width >= NARROW && renderer.camera.height <= 1.2 * renderer.camera.width;
 /**
@@ -599,10 +591,9 @@ function aimView(): View {
   if (upright()) return uprightAimView(field(), renderer.camera.width, renderer.camera.height);
   if (desktop()) {
     const v = deskViews();
-    // The whole field while a pull is under way, and for the level's opening (before a first throw);
-    // else the castle, close.
-    const opening = shots.length === 0 && shell.world.time - levelStart < OPENING;
-    return aim.active || opening ? v.field : v.castle;
+    // The whole field while a pull is under way and until the level's first throw (the catapult and
+    // its target stay in view while a newcomer reads how to throw); else the castle, close.
+    return aim.active || shots.length === 0 ? v.field : v.castle;
   }
   // Room behind the catapult for its stones where the screen is wide enough.
   const behind = renderer.camera.width < NARROW ? 1.6 : 3.1;
