@@ -8,6 +8,9 @@
  * aim view to the castle as the stone crosses the field) and 'castle' (the castle and the rock
  * behind it, close: a phone's look button, and a finished level's wreck).
  *
+ * On a desktop the views are `wideViews`: the whole field (the catapult and the castle) for the
+ * level's start until its first throw and while the player pulls, the castle close between throws.
+ *
  * Upright, an aim view fitted to the catapult and the castle draws the castle small (14 to 22 px a
  * metre at 390 px wide); the page shows it again, close, in the earth under the ground while the
  * player aims (`aimCloseUp`).
@@ -152,4 +155,57 @@ export function aimCloseUp(f: Field, width: number, height: number): boolean {
   if (!(width > 0 && height > 0)) throw new RangeError(`aimCloseUp: the screen must be > 0 px each way, got ${width} x ${height}`);
   // The aim view's width (uprightAimView's span), fitted to the screen's width.
   return width / (f.castleMaxX + AIM_PAST - AIM_LEFT) < AIM_CLOSE_PX_PER_M;
+}
+
+/**
+ * On a wide screen (a desktop), the play area the camera fits: from the view's foot (`minY`, under the
+ * ground) to PLAY_SKY m over the castle's top, and at least to PLAY_TOP m (room over a low castle for
+ * the arcs that come down on it). The whole field fitted to a desktop's width drew the castle and the
+ * catapult in the bottom fifth of the screen under empty sky.
+ */
+export const PLAY_SKY = 3;
+export const PLAY_TOP = 7;
+/** The highest a wide field view's lowest surface sits: this share of the screen's height from the bottom. */
+export const FIELD_GROUND = 0.2;
+/** Room before the castle's near end and past the rock in the wide castle view, m. */
+const CASTLE_BEFORE = 1.2,
+  CASTLE_PAST = 0.4;
+
+/** The views of a wide screen (see `wideViews`). */
+export interface WideViews {
+  /** The catapult and the whole castle: until the level's first throw and while a pull is under way, so the player sees what they aim at. */
+  field: View;
+  /** The castle and the rock behind it, close: at rest between throws, a throw's end and a finished level's wreck. */
+  castle: View;
+}
+
+/**
+ * A wide screen's (`width` x `height` px, not an upright phone's) views of field `f`, each with its
+ * foot at `minY` (m, under the lowest surface) and the screen's aspect:
+ * - field: from AIM_LEFT (the catapult and its stones) to AIM_PAST past the castle's far end, fitted
+ *   to the screen's width (no lower than the play area: PLAY_SKY over the castle, PLAY_TOP at least);
+ * - castle: the castle and the rock, from CASTLE_BEFORE before it to CASTLE_PAST past the rock,
+ *   fitted to the play area's height, or zoomed out as far as holding them needs.
+ * A view taller than the play area puts half its extra height under `minY` (earth), its lowest
+ * surface no higher than FIELD_GROUND of the way up, and the rest over the play area (sky).
+ * @throws RangeError if the screen's size is not positive.
+ */
+export function wideViews(f: Field, width: number, height: number, minY: number): WideViews {
+  if (!(width > 0 && height > 0)) throw new RangeError(`wideViews: the screen must be > 0 px each way, got ${width} x ${height}`);
+  const aspect = height / width;
+  const playW = (Math.max(f.castleTop + PLAY_SKY, PLAY_TOP) - minY) / aspect;
+  const playH = playW * aspect;
+  // A view wider than the play area's is taller than it: half the extra height goes under the ground
+  // (earth), so long as the lowest surface stays under FIELD_GROUND of the way up the screen, and the
+  // rest to sky, rather than all of it to sky.
+  const view = (x0: number, w: number): View => {
+    const h = w * aspect;
+    const foot = Math.min(minY, Math.max(minY - (h - playH) / 2, f.floor - FIELD_GROUND * h));
+    return { minX: x0, minY: foot, maxX: x0 + w, maxY: foot + h };
+  };
+  const fieldW = Math.max(playW, f.castleMaxX + AIM_PAST - AIM_LEFT);
+  const c0 = f.castleMinX - CASTLE_BEFORE,
+    c1 = rockRight(f.castleMaxX) + CASTLE_PAST;
+  const cw = Math.max(playW, c1 - c0);
+  return { field: view(AIM_LEFT, fieldW), castle: view((c0 + c1 - cw) / 2, cw) };
 }

@@ -221,6 +221,34 @@ export function drawStone(g: Graphics, cam: Camera, x: number, y: number, angle:
 }
 
 /**
+ * The player's shot (a thrown or loaded stone) of radius r (m) centred at (x, y), turned by `angle`:
+ * a round shot of dark iron, unlike the castle's grey stones, with a pale rim that keeps its edge
+ * on dark earth and wood, a bright highlight at its upper left, and an iron band across it with a
+ * rivet at each end that turns with it (so a rolling shot is seen to roll).
+ */
+export function drawShot(g: Graphics, cam: Camera, x: number, y: number, angle: number, r: number): void {
+  const sx = cam.toScreenX(x),
+    sy = cam.toScreenY(y),
+    R = Math.max(3, cam.toScreenLength(r));
+  g.circle(sx, sy, R + 1)
+    .fill(SHOT_COLOR)
+    .stroke({ width: Math.max(1.5, 0.12 * R), color: 0xf1e6c8, alpha: 0.95 });
+  // The band: a chord through the middle at `angle`, darker, with a rivet at each end.
+  const c = Math.cos(angle),
+    s = Math.sin(angle);
+  g.moveTo(sx - 0.92 * R * c, sy + 0.92 * R * s)
+    .lineTo(sx + 0.92 * R * c, sy - 0.92 * R * s)
+    .stroke({ width: Math.max(1.5, 0.22 * R), color: 0x14161a });
+  for (const k of [-0.62, 0.62]) g.circle(sx + k * R * c, sy - k * R * s, Math.max(1, 0.1 * R)).fill(0x8d96a3);
+  // Lit from the upper left: a soft sheen and a sharp highlight.
+  g.circle(sx - 0.28 * R, sy - 0.3 * R, 0.5 * R).fill({ color: 0xb8c7dd, alpha: 0.22 });
+  g.circle(sx - 0.38 * R, sy - 0.4 * R, Math.max(1.2, 0.2 * R)).fill({ color: 0xffffff, alpha: 0.9 });
+}
+
+/** The player's shot's iron colour (`drawShot`). */
+export const SHOT_COLOR = 0x262a31;
+
+/**
  * The catapult's parts, m and rad (angles from +x, counter-clockwise): where the arm turns (its axle
  * on the base), its length, and its angles. Cocked, the arm lies back over the base with its cup up;
  * a pull swings it further back; a throw swings it up through the launch point (upright, its cup at

@@ -39,6 +39,8 @@ import {
   type CameraShot,
   cameraShot,
   type Field,
+  PLAY_SKY,
+  PLAY_TOP,
   rockRight as rockRightOf,
   UPRIGHT_GROUND,
   UPRIGHT_WATCH,
@@ -46,9 +48,25 @@ import {
   uprightCastleView,
   uprightView as uprightViewOf,
   type View,
+  type WideViews,
+  wideViews,
 } from './camera';
 import { type DebrisKind, Effects } from './effects';
-import { CATAPULT, cupAt, drawBrick, drawCatapult, drawGlass, drawHill, drawMound, drawPit, drawStone, drawWood, mixColor } from './look';
+import {
+  CATAPULT,
+  cupAt,
+  drawBrick,
+  drawCatapult,
+  drawGlass,
+  drawHill,
+  drawMound,
+  drawPit,
+  drawShot,
+  drawStone,
+  drawWood,
+  mixColor,
+  SHOT_COLOR,
+} from './look';
 import {
   angleForRange,
   buildLevel,
@@ -307,13 +325,14 @@ const downShare = (): number => {
   return c.of === 0 ? 1 : c.down / c.of;
 };
 /**
- * What "down" means, as the player is told: the rule of scene.ts hasFallen (FALL_DROP, TIP_ANGLE,
- * KNOCK_DISTANCE) and countsTowardStars, in words; a piece down turns darker.
+ * What "down" means, as the player is told: the rule of scene.ts hasFallen (a drop of DROP_SHARE of a
+ * piece's height, a lean past TIP_ANGLE, a knock of KNOCK_DISTANCE) and countsTowardStars, in words;
+ * a piece down turns darker.
  */
-const DOWN_RULE = 'Down: dropped, tipped or knocked 1 m (it darkens); a flat bottom row does not count';
-const DOWN_RULE_SHORT = 'Down: dropped, tipped or knocked 1 m (darkens); not a flat bottom row';
+const DOWN_RULE = 'Down: fallen, leaning 30° or knocked aside (it darkens); a flat bottom row does not count';
+const DOWN_RULE_SHORT = 'Down: fallen, leaning 30° or knocked aside (darkens); not a flat bottom row';
 /** The same rule in the controls' help (after a "Stars" cap): what the stars count. */
-const DOWN_HELP = 'count pieces down (they darken): dropped, tipped or knocked 1 m; not a flat bottom row';
+const DOWN_HELP = 'count pieces down (they darken): fallen, leaning 30° or knocked aside; not a flat bottom row';
 /**
  * The banner's type size on an upright phone, px: with the short rules a level's start is two lines
  * on a 390 px phone.
@@ -461,13 +480,15 @@ shell.onWorldChange(() => {
 });
 
 /**
- * The camera has two views. The aim view: on a wide screen the whole play area, from behind the
- * catapult to just past the rock, fitted to the screen's width, so the player sees both the catapult
- * and the castle while aiming; from just behind the stones stacked by the catapult, or on a narrow
- * screen (a phone) just behind the catapult (a drag aims from anywhere). The shot view: after a
- * throw, the castle and the rock with room for debris around them, on a phone only, where it is
- * closer than the aim view: the camera eases to it while the stone flies and back to the aim view
- * once the throw's verdict has faded, or at once when a finger or the mouse goes down to aim.
+ * The camera has two views. The aim view: on a desktop (./camera wideViews) the field view, the
+ * catapult and the whole castle with the ground a fifth of the way up, until the level's first
+ * throw and while a pull is under way, and between throws the castle view, the castle and the
+ * rock fitted to the play area's height (the whole field fitted to the width drew them in the
+ * bottom fifth under empty sky); on a sideways phone the whole play area, from just behind the
+ * catapult to just past the rock, fitted to the screen's width (a drag aims from anywhere). The
+ * shot view: after a throw, the castle and the rock with room for debris around them, where it is
+ * closer than the aim view or elsewhere: the camera eases to it while the stone flies and back to
+ * the aim view once the throw's verdict has faded, or at once when a finger or the mouse goes down to aim.
  * On a wide view the scene is as tall as the castle needs; on a tall one the ground sits GROUND_AT of
  * the way up the screen, earth below it and sky above. The view eases a tenth of the way each frame;
  * it jumps when the screen's size changes.
@@ -550,9 +571,30 @@ function field(): Field {
 }
 /** The right face of the rock behind the castle, m. */
 const rockRight = (): number => rockRightOf(lv.castleMaxX);
-/** The aim view (see above): upright, the catapult and the whole castle (./camera uprightAimView). */
+/** Whether the screen is a desktop's: wide enough (NARROW) and not taller than 1.2 x its width (an upright tablet keeps the tall views); its views are ./camera wideViews. */
+const desktop = (): boolean => renderer.camera.width >= NARROW && renderer.camera.height <= 1.2 * renderer.camera.width;
+/**
+ * A desktop's views (./camera wideViews): their foot 0.6 m under the lowest surface and at least 1 m
+ * under the ground, lower still by the touch hint's height while it shows (at the play area's scale).
+ */
+function deskViews(): WideViews {
+  const cam = renderer.camera;
+  const W = Math.max(1, cam.width),
+    H = Math.max(1, cam.height);
+  let minY = Math.min(-1, Math.min(0, ...lv.terrain.map((t) => t.maxY)) - 0.6);
+  const R = hintReserve();
+  if (R > 0 && R < H) minY -= (R * (Math.max(lv.castleTop + PLAY_SKY, PLAY_TOP) - minY)) / (H - R);
+  return wideViews(field(), W, H, minY);
+}
+/** The aim view (see above): upright, the catapult and the whole castle (./camera uprightAimView); on a desktop the rest view, or the drag view while a pull is under way. */
 function aimView(): View {
   if (upright()) return uprightAimView(field(), renderer.camera.width, renderer.camera.height);
+  if (desktop()) {
+    const v = deskViews();
+    // The whole field while a pull is under way and until the level's first throw (the catapult and
+    // its target stay in view while a newcomer reads how to throw); else the castle, close.
+    return aim.active || shots.length === 0 ? v.field : v.castle;
+  }
   // Room behind the catapult for its stones where the screen is wide enough.
   const behind = renderer.camera.width < NARROW ? 1.6 : 3.1;
   return viewFor(LAUNCH.x - behind, rockRight() + 0.6);
@@ -567,9 +609,7 @@ const CLOSE_MAX = 6;
 function shotViewRect(): View {
   if (upright()) return uprightCastleView(field(), renderer.camera.width, renderer.camera.height);
   if (renderer.camera.width < NARROW) return viewFor(lv.castleMinX - 2.5, rockRight() + 2.5);
-  // A desktop: the castle close, the rock's near half at the right edge (with 2.5 m either side and
-  // the whole rock it would be hardly closer than the aim view, the castle a strip under much sky).
-  return viewFor(lv.castleMinX - 1.2, lv.castleMaxX + ROCK.gap + ROCK.hx + 0.2);
+  return deskViews().castle;
 }
 /** Screen pixels a metre in view `v`, fitted (letterboxed) to the screen. */
 function pxPerM(v: View): number {
@@ -581,14 +621,20 @@ function pxPerM(v: View): number {
  * castle at least 1.25 x as large as the aim view (a desktop's aim view, the whole field fitted to
  * its width, drew the castle as a strip under 80 % of sky after a throw).
  */
-const zoomsIn = (): boolean => upright() || pxPerM(shotViewRect()) >= 1.25 * pxPerM(aimView());
+const zoomsIn = (): boolean => {
+  if (upright()) return true;
+  // A desktop follows a throw from the whole field to the castle.
+  if (desktop()) return true;
+  return pxPerM(shotViewRect()) >= 1.25 * pxPerM(aimView());
+};
 /**
  * The view while the stone flies: between the aim view (u = 0) and the shot view (u = 1),
  * u the share of the way from the catapult to the castle's front the stone has got (its farthest
  * x), and shifted where needed so the stone stays at least 15 % of the view's width inside it.
  */
 function followView(): View {
-  const a = aimView(),
+  // (On a desktop from the drag view, where the throw was aimed.)
+  const a = desktop() ? deskViews().field : aimView(),
     s = shotViewRect();
   const x = lastThrow.farthest;
   const u = Math.min(1, Math.max(0, (x - LAUNCH.x) / Math.max(1, lv.castleMinX - 1 - LAUNCH.x)));
@@ -598,6 +644,11 @@ function followView(): View {
   // Never past the shot view's right edge: a long throw is followed to the rock, and the arrow at the
   // screen's edge points on at it (followed on, the view left the castle for the ground's bare end).
   c = Math.min(c, s.maxX - w / 2);
+  // A desktop's: its foot too goes from the field view's to the castle view's.
+  if (desktop()) {
+    const foot = a.minY + u * (s.minY - a.minY);
+    return { minX: c - w / 2, minY: foot, maxX: c + w / 2, maxY: foot + (w * renderer.camera.height) / renderer.camera.width };
+  }
   if (!upright()) return viewFor(c - w / 2, c + w / 2);
   return uprightView(c - w / 2, c + w / 2);
 }
@@ -807,7 +858,7 @@ function fire(dx: number, dy: number): number {
   if (levelEnded || shotsLeft <= 0 || Math.hypot(dx, dy) < 0.3) return 0;
   const [vx, vy] = launchVelocity(dx, dy);
   const ball = launch(shell.world, vx, vy, params.projectileMass);
-  renderer.setColor(ball, 0x3d434d);
+  renderer.setColor(ball, SHOT_COLOR);
   shots.push(ball);
   if (!DEMO) hideHowTo();
   shotsLeft--;
@@ -1305,18 +1356,15 @@ function drawAmmo(): void {
   const inCup = loaded();
   if (inCup) {
     const [, , x, y] = cupAt(arm.angle, PROJECTILE_RADIUS);
-    drawStone(overlay, cam, x, y, 0.6, PROJECTILE_RADIUS, STONE_COLOR);
+    drawShot(overlay, cam, x, y, 0.6, PROJECTILE_RADIUS);
   }
   const pile = shotsLeft - (inCup ? 1 : 0);
   for (let k = 0; k < pile; k++) {
     const row = k < 3 ? 0 : 1,
       col = row === 0 ? k : k - 3;
-    drawStone(overlay, cam, -1.75 - 0.5 * col - 0.25 * row, 0.24 + 0.42 * row, 1.3 * k, 0.24, STONE_COLOR);
+    drawShot(overlay, cam, -1.75 - 0.5 * col - 0.25 * row, 0.24 + 0.42 * row, 1.3 * k, 0.24);
   }
 }
-
-/** The thrown stones' colour. */
-const STONE_COLOR = 0x6b6660;
 
 /**
  * Draws the castle's pieces (wood, glass, stones) over their plain shapes, where and as turned as the
@@ -1362,7 +1410,7 @@ function drawPieces(world: PhysicsWorld, alpha: number): void {
   }
   for (const b of shots) {
     if (!place(b)) continue;
-    drawStone(overlay, cam, at.x, at.y, angleOf(b), PROJECTILE_RADIUS, STONE_COLOR);
+    drawShot(overlay, cam, at.x, at.y, angleOf(b), PROJECTILE_RADIUS);
   }
 }
 

@@ -5,9 +5,10 @@
  *
  * Units: metres, seconds, kilograms. The ground's top is y = 0 from x = GROUND.minX to GROUND.maxX
  * (a level's hill or pit changes it there: `Level.terrain`); the catapult throws from LAUNCH.
- * Score: FALL_POINTS for every castle piece that fell (`hasFallen`: its centre more than FALL_DROP
- * below where it started, knocked KNOCK_DISTANCE from there, a box tipped past TIP_ANGLE, or off the
- * ground's end) and BREAK_POINTS for every weld joint that broke.
+ * Score: FALL_POINTS for every castle piece that is down (`hasFallen`, measured from where the piece
+ * came to rest once the new castle settled: dropped more than DROP_SHARE of its height, knocked
+ * KNOCK_DISTANCE aside, a box tipped past TIP_ANGLE, or off the ground's end) and BREAK_POINTS for
+ * every weld joint that broke.
  */
 import {
   addBody,
@@ -15,11 +16,13 @@ import {
   addSystem,
   addWeldJoint,
   isAlive,
+  isSleeping,
   type PhysicsWorld,
   type PhysicsWorldOptions,
   Rng,
   removeBody,
   slotOf,
+  step,
 } from '@bitphysics/physics';
 
 /** Where the projectile leaves the catapult (its cup), m. */
@@ -45,15 +48,24 @@ export const PROJECTILE_RADIUS = 0.3;
  * ground never slows).
  */
 export const ROLL_RESISTANCE = 1.2;
-/** Drop (m) below its start past which a castle piece counts as fallen. */
-export const FALL_DROP = 0.6;
 /**
- * A castle piece has also fallen when its centre is this far (m) from where it started, or a box has
- * turned past TIP_ANGLE (rad): a post on the ground knocked over, or a stone block pushed off its
- * row, cannot drop FALL_DROP, and counted as standing it left three stars out of reach on every level.
+ * A castle piece is down when its centre has dropped more than DROP_SHARE of its height (as built:
+ * twice its half height, a stone's diameter) below where it came to rest, and at least DROP_MIN m: a
+ * stall whose posts buckle drops its roof plank a few tenths of a metre, which a player sees as
+ * fallen, while settling moves a piece by millimetres.
  */
-export const KNOCK_DISTANCE = 1;
-export const TIP_ANGLE = Math.PI / 3;
+export const DROP_SHARE = 0.35;
+export const DROP_MIN = 0.15;
+/**
+ * A castle piece is also down when its centre is KNOCK_DISTANCE (m) from where it came to rest (a
+ * stone block pushed off its row, a post on the ground shoved aside, a crown stone rolled off its
+ * roof), or a box has turned past TIP_ANGLE (rad, 30 degrees) from its resting angle: a post leaning
+ * that far reads as falling over, and one leaning less can still stand.
+ */
+export const KNOCK_DISTANCE = 0.8;
+export const TIP_ANGLE = Math.PI / 6;
+/** Longest settling of a new castle before its resting poses are taken (`settleLevel`), s. */
+export const SETTLE_TIME = 3;
 /** Points for a fallen piece and for a broken joint. */
 export const FALL_POINTS = 100;
 export const BREAK_POINTS = 25;
@@ -69,11 +81,13 @@ export interface LevelOptions {
   jointStrength: number;
 }
 
-/** One castle piece: its body and where it started. */
+/** One castle piece: its body and where it came to rest once its castle settled (`settleLevel`). */
 export interface Piece {
   body: number;
+  /** Centre (m) and angle (rad) at rest: as built until the castle has settled, then where it settled. */
   startX: number;
   startY: number;
+  startAngle: number;
   /** Wood ('post', 'plank'), glass ('block': blocks and panes), stone ('brick': a block; 'stone': round). */
   kind: 'post' | 'plank' | 'block' | 'brick' | 'stone';
   /** Half width and half height of a box, m; a stone's radius twice. */
@@ -588,7 +602,7 @@ export function buildLevel(world: PhysicsWorld, o: LevelOptions): Level {
     },
   };
   const piece = (body: number, kind: Piece['kind'], half: [number, number], x: number, y: number): number => {
-    lv.pieces.push({ body, startX: x, startY: y, kind, half });
+    lv.pieces.push({ body, startX: x, startY: y, startAngle: 0, kind, half });
     lv.castleMinX = Math.min(lv.castleMinX, x - half[0]);
     lv.castleMaxX = Math.max(lv.castleMaxX, x + half[0]);
     lv.castleTop = Math.max(lv.castleTop, y + half[1]);
@@ -605,7 +619,28 @@ export function buildLevel(world: PhysicsWorld, o: LevelOptions): Level {
     static: true,
     friction: 0.9,
   });
+  settleLevel(world, lv);
   return lv;
+}
+
+/**
+ * Lets the castle of `lv`, just built in `world`, settle under its own weight: steps the world until
+ * every piece is asleep (a castle sleeps about a second after its build) or SETTLE_TIME s have
+ * passed, then takes each piece's pose as its resting one (`Piece.startX`, `startY`, `startAngle`),
+ * from which `hasFallen` measures. A piece only settling is so never counted down. `buildLevel` calls it.
+ */
+export function settleLevel(world: PhysicsWorld, lv: Level): void {
+  const steps = Math.ceil(SETTLE_TIME / world.dt);
+  for (let i = 0; i < steps && !lv.pieces.every((p) => !isAlive(world, p.body) || isSleeping(world, p.body)); i++) step(world);
+  const P = world.components.Position,
+    A = world.components.Angle.value;
+  for (const p of lv.pieces) {
+    if (!isAlive(world, p.body)) continue;
+    const s = slotOf(p.body);
+    p.startX = P.x[s]!;
+    p.startY = P.y[s]!;
+    p.startAngle = A[s]!;
+  }
 }
 
 /**
@@ -904,9 +939,10 @@ export interface Tally {
 }
 
 /**
- * Whether a piece has fallen: dropped FALL_DROP below its start, knocked KNOCK_DISTANCE from it, a
- * box (not a round stone) turned past TIP_ANGLE from its start (every piece is built upright), off
- * the ground's end (past its ends, or 3 m down: below every level's surface, the deepest pit's
+ * Whether a piece is down, as a player sees it, measured from where it came to rest (`settleLevel`):
+ * its centre dropped more than DROP_SHARE of its height (and at least DROP_MIN m), moved
+ * KNOCK_DISTANCE from there, a box (not a round stone) turned past TIP_ANGLE from its resting angle,
+ * off the ground's end (past its ends, or 3 m down: below every level's surface, the deepest pit's
  * floor being 1.6 m down), or removed.
  */
 export function hasFallen(world: PhysicsWorld, p: Piece): boolean {
@@ -915,11 +951,12 @@ export function hasFallen(world: PhysicsWorld, p: Piece): boolean {
     P = world.components.Position;
   const x = P.x[s]!,
     y = P.y[s]!;
-  if (y < p.startY - FALL_DROP || x < GROUND.minX || x > GROUND.maxX || y < -3) return true;
+  const drop = Math.max(DROP_MIN, DROP_SHARE * 2 * p.half[1]);
+  if (y < p.startY - drop || x < GROUND.minX || x > GROUND.maxX || y < -3) return true;
   if (Math.hypot(x - p.startX, y - p.startY) > KNOCK_DISTANCE) return true;
   if (p.kind === 'stone') return false;
-  // The turn from upright, wrapped into [0, pi].
-  const a = Math.abs(world.components.Angle.value[s]! % (2 * Math.PI));
+  // The turn from its resting angle, wrapped into [0, pi].
+  const a = Math.abs((world.components.Angle.value[s]! - p.startAngle) % (2 * Math.PI));
   return Math.min(a, 2 * Math.PI - a) > TIP_ANGLE;
 }
 

@@ -186,7 +186,7 @@ async function phoneBeforeTouch(p: GamePage): Promise<{ hint: Locator; box: DOMR
   // the type size and the outline adds 4 px: two lines 2.9 x, three 4.2 x; bound 3.5 x). (Four lines
   // with what "down" means were too many for a stranger; the card saying how to play tells it.)
   expect(opening.banner.height).toBeLessThan(3.5 * opening.banner.fontSize);
-  expect(await p.page.locator('[data-hud="touch-hint"]').textContent()).toContain('knocked 1 m');
+  expect(await p.page.locator('[data-hud="touch-hint"]').textContent()).toContain('leaning 30°');
   expect(opening.banner.width).toBeLessThanOrEqual(opening.W);
   await expectSunClear(p);
   // The castle shows in a close-up too, drawn at 1.4 times the scene's scale or more, on the canvas
@@ -1050,7 +1050,7 @@ describe('catapult', () => {
     // Level 1's caption is two lines: the level and its shots, then the star rule (it was three on a
     // desktop, four on a phone, with what counts as down: that is in the controls' help now).
     expect((await g.page.evaluate(() => (window.game as unknown as W).bannerText())).split('\n')).toHaveLength(2);
-    expect(await g.page.locator('.bp-legend').textContent()).toContain('knocked 1 m');
+    expect(await g.page.locator('.bp-legend').textContent()).toContain('leaning 30°');
     await g.page.evaluate(() => {
       const w = window.game as unknown as CatapultGame;
       w.paused = true;

@@ -2,7 +2,8 @@
  * Catapult camera's decisions (games/catapult/camera.ts), headless: on an upright phone the level
  * opens on the catapult and the whole castle and holds them while aiming, follows a throw to the
  * castle, and the look button shows the castle close while aiming; on a wide screen the aim view is
- * the overview. The upright views are checked against every level's castle (scene.ts) at 390 x 844.
+ * the overview. The upright views are checked against every level's castle (scene.ts) at 390 x 844,
+ * the desktop's (wideViews) at 1060 x 800.
  */
 
 import { createPhysicsWorld } from '@bitphysics/physics';
@@ -12,7 +13,9 @@ import {
   aimCloseUp,
   type CameraInput,
   cameraShot,
+  FIELD_GROUND,
   type Field,
+  PLAY_SKY,
   rockRight,
   UPRIGHT_GROUND,
   UPRIGHT_GROUND_CLOSE,
@@ -20,8 +23,9 @@ import {
   uprightCastleView,
   uprightView,
   type View,
+  wideViews,
 } from '../../games/catapult/camera';
-import { buildLevel, LEVEL_COUNT, ROCK, worldOptions } from '../../games/catapult/scene';
+import { buildLevel, LAUNCH, LEVEL_COUNT, ROCK, worldOptions } from '../../games/catapult/scene';
 
 /** A phone held upright, nothing thrown. */
 const aiming: CameraInput = { upright: true, peeking: false, shotView: false, wreck: false, zoomsIn: true };
@@ -113,6 +117,52 @@ describe('catapult camera', () => {
     // Every level on a 390 x 844 phone: levels 1 and 2 (near castles, 21 and 22 px a metre) drew
     // their stalls and keep about 25 px tall in a thin strip; the close-up shows them as large as the rest.
     expect(shownWhileAiming).toEqual([1, 2, 3, 4, 5, 6, 7, 8, 9]);
+  });
+
+  it('desktop 1060 x 800 (1280 x 800 less the side column) on every level: the castle view fills the screen with the castle; the field view holds the catapult and the castle with the ground low', () => {
+    // Strangers saw the castle and the catapult in the bottom fifth of the screen under a lot of sky:
+    // the old overview fitted the field from 3.1 m behind the catapult to 0.6 m past the rock to the
+    // screen's width, its foot 1 m under the ground (main.ts viewFor before wideViews). Compared here
+    // against that view, computed in closed form.
+    const [W, H] = [1060, 800];
+    const minY = -1;
+    let least = Number.POSITIVE_INFINITY;
+    for (let level = 0; level < LEVEL_COUNT; level++) {
+      const w = createPhysicsWorld(worldOptions({ gravity: 9.81 }));
+      const lv = buildLevel(w, { level, seed: 1, gravity: 9.81, jointStrength: 400 });
+      const f: Field = {
+        castleMinX: lv.castleMinX,
+        castleMaxX: lv.castleMaxX,
+        castleTop: lv.castleTop,
+        floor: Math.min(0, ...lv.terrain.map((t) => t.maxY)),
+      };
+      const tag = `level ${level + 1}`;
+      const { field, castle } = wideViews(f, W, H, Math.min(minY, f.floor - 0.6));
+      for (const v of [field, castle]) expect((v.maxY - v.minY) / (v.maxX - v.minX), tag).toBeCloseTo(H / W, 6);
+      const contains = (v: View, x0: number, y0: number, x1: number, y1: number) =>
+        v.minX <= x0 && x1 <= v.maxX && v.minY <= y0 && y1 <= v.maxY;
+      // The field view: the catapult with its stones (x -3.0 to 1.1 m, y 0 to 2 m) and the whole castle;
+      // the castle view: the castle and the rock, with PLAY_SKY m of sky over the castle at least.
+      expect(contains(field, -3.0, 0, 1.1, 2), tag).toBe(true);
+      expect(contains(field, f.castleMinX, f.floor, f.castleMaxX, f.castleTop), tag).toBe(true);
+      expect(contains(castle, f.castleMinX, f.floor, rockRight(f.castleMaxX), Math.max(f.castleTop + PLAY_SKY, 2 * ROCK.hy)), tag).toBe(
+        true,
+      );
+      // The lowest surface at most FIELD_GROUND of the way up either view (earth under it, not half the screen).
+      for (const v of [field, castle]) expect((f.floor - v.minY) / (v.maxY - v.minY), tag).toBeLessThanOrEqual(FIELD_GROUND + 1e-9);
+      // The castle's share of the screen's height: in the castle view at least 1.5 x the old
+      // overview's, and at least a fifth of the screen (the old one: 8 to 26 %).
+      const oldH = ((rockRight(f.castleMaxX) + 0.6 - (LAUNCH.x - 3.1)) * H) / W;
+      const share = (f.castleTop - f.floor) / (castle.maxY - castle.minY),
+        oldShare = (f.castleTop - f.floor) / Math.max(oldH, f.castleTop + 4 - minY);
+      expect(share / oldShare, tag).toBeGreaterThanOrEqual(1.5);
+      expect(share, tag).toBeGreaterThanOrEqual(0.2);
+      least = Math.min(least, share / oldShare);
+    }
+    expect(least).toBeGreaterThanOrEqual(1.5);
+    expect(() => wideViews({ castleMinX: 10, castleMaxX: 14, castleTop: 3, floor: 0 }, 0, 800, -1)).toThrow(
+      /wideViews: the screen must be > 0 px each way, got 0 x 800/,
+    );
   });
 
   it('rejects bad input, naming the function and the value', () => {

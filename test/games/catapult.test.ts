@@ -232,12 +232,85 @@ describe('catapult rules', () => {
     w.components.Angle.value[s] = (80 * Math.PI) / 180;
     w.components.Position.y[s] = post.startY - 0.45;
     expect(hasFallen(w, post)).toBe(true);
-    // Turned 30 degrees: still standing; pushed 1.2 m along the ground: fallen.
-    w.components.Angle.value[s] = (30 * Math.PI) / 180;
+    // Turned 20 degrees: still standing (down from TIP_ANGLE, 30 degrees); pushed 1.2 m along the ground: fallen.
+    w.components.Angle.value[s] = (20 * Math.PI) / 180;
     w.components.Position.y[s] = post.startY;
     expect(hasFallen(w, post)).toBe(false);
     w.components.Position.x[s] = post.startX + 1.2;
     expect(hasFallen(w, post)).toBe(true);
+  });
+
+  it('down is what a player sees: a piece tipped 30 degrees, dropped a third of its height or knocked 0.8 m aside', () => {
+    // Strangers saw a stall on level 1 lean and half collapse while the count stayed 3 / 9 (down was a
+    // 0.6 m drop, a 60 degree tip or a 1 m knock). Each case here is set on a settled level-1 piece and
+    // checked against the piece's own size: a post (1.2 m tall), its roof plank (0.24 m) and a stone.
+    const { w, lv } = level(0);
+    const P = w.components.Position,
+      A = w.components.Angle.value;
+    const post = lv.pieces.find((p) => p.kind === 'post')!,
+      plank = lv.pieces.find((p) => p.kind === 'plank')!,
+      stone = lv.pieces.find((p) => p.kind === 'stone')!;
+    /** Whether piece p is down with its pose moved by (dx, dy) m and turned by da degrees from rest (then put back). */
+    const downAfter = (p: (typeof lv.pieces)[number], dx: number, dy: number, da: number): boolean => {
+      const s = slotOf(p.body);
+      const was = [P.x[s]!, P.y[s]!, A[s]!] as const;
+      P.x[s] = p.startX + dx;
+      P.y[s] = p.startY + dy;
+      A[s] = p.startAngle + (da * Math.PI) / 180;
+      const down = hasFallen(w, p);
+      [P.x[s], P.y[s], A[s]] = was;
+      return down;
+    };
+    // Leaning: 20 degrees stands, 40 (either way) is down; a round stone may roll any amount.
+    expect(downAfter(post, 0, 0, 20)).toBe(false);
+    expect(downAfter(post, 0, 0, 40)).toBe(true);
+    expect(downAfter(post, 0, 0, -40)).toBe(true);
+    expect(downAfter(stone, 0, 0, 400)).toBe(false);
+    // Sunk: a post's roof plank 0.2 m lower (its posts buckled) is down, 0.05 m is settling; a post
+    // 0.5 m lower (over a third of its 1.2 m) is down, 0.3 m not.
+    expect(downAfter(plank, 0, -0.2, 0)).toBe(true);
+    expect(downAfter(plank, 0, -0.05, 0)).toBe(false);
+    expect(downAfter(post, 0, -0.5, 0)).toBe(true);
+    expect(downAfter(post, 0, -0.3, 0)).toBe(false);
+    // Knocked: a stone rolled 0.9 m along its roof is off its place, 0.5 m is not.
+    expect(downAfter(stone, 0.9, 0, 0)).toBe(true);
+    expect(downAfter(stone, 0.5, 0, 0)).toBe(false);
+    expect(tally(w, lv).fallen).toBe(0);
+
+    // A stall knocked down for real: a throw at 5 degrees and half power (10.5 m/s) into the near
+    // stall. 3 s on, its plank has come down below half its height above the ground (a visible
+    // collapse, measured here without hasFallen): the plank and both posts count, and none of the far
+    // stall's pieces (untouched, more than 3 m behind) does.
+    const s = slotOf(plank.body);
+    const stall = lv.pieces.filter((p) => Math.abs(p.startX - plank.startX) < 1.5 && p.kind !== 'stone');
+    const a = (5 * Math.PI) / 180;
+    launch(w, 10.5 * Math.cos(a), 10.5 * Math.sin(a), 3);
+    for (let i = 0; i < 180; i++) {
+      step(w);
+      tally(w, lv);
+    }
+    expect(P.y[s]!).toBeLessThan(plank.startY / 2);
+    expect(stall.length).toBe(3);
+    expect(stall.every((p) => p.down)).toBe(true);
+    expect(lv.pieces.filter((p) => p.startX > plank.startX + 3).some((p) => p.down)).toBe(false);
+  });
+
+  it('a castle only settling is never down: ten seconds untouched, no piece counts on any level', () => {
+    // The resting poses are taken once the new castle sleeps (settleLevel); before, a castle's pieces
+    // settled by under 5 mm in their first second, far inside DROP_MIN (0.15 m) and TIP_ANGLE.
+    for (let n = 0; n < LEVEL_COUNT; n++) {
+      const { w, lv } = level(n);
+      expect(
+        lv.pieces.every((p) => isSleeping(w, p.body)),
+        `level ${n + 1} settled`,
+      ).toBe(true);
+      for (let i = 0; i < 600; i++) {
+        step(w);
+        if (i % 30 === 0) tally(w, lv);
+      }
+      expect(tally(w, lv).fallen, `level ${n + 1}`).toBe(0);
+      expect(lv.pieces.some((p) => hasFallen(w, p))).toBe(false);
+    }
   });
 
   it('the aim preview ends where the stone first touches something: within 0.25 m on every level', () => {
