@@ -212,9 +212,12 @@ export class Effects {
           b.vx[k] = b.vx[k]! * damp;
           b.vy[k] = (b.vy[k]! - g * dt) * damp;
         } else b.vy[k] = b.vy[k]! - g * dt;
-        // A chip or a bit of confetti that reaches the ground (a hill's top, a pit's floor) lies
-        // there, not falling on through the earth on a phone's screen.
-        if (b.y[k]! + b.vy[k]! * dt < this.surface(b.x[k]!) + 0.02) {
+        // One flying sideways into a step of the ground (a pit's wall, a hill's side) stops
+        // against it and drops, not passing into the earth beyond.
+        if (b.vx[k] !== 0 && b.y[k]! < this.surface(b.x[k]! + b.vx[k]! * dt)) b.vx[k] = 0;
+        // A chip or a bit of confetti that reaches the ground where it is going (a hill's top, a
+        // pit's floor or its lip) lies there, not falling on through the earth on a phone's screen.
+        if (b.y[k]! + b.vy[k]! * dt < this.surface(b.x[k]! + b.vx[k]! * dt) + 0.02) {
           b.vy[k] = 0;
           b.vx[k] = 0;
           b.w[k] = 0;
