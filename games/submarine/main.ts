@@ -54,6 +54,7 @@ import {
   seabedBetween,
 } from './beacons';
 import { drawBoat, HEADLIGHT, inHeadlight } from './boat-drawing';
+import { currentAt, drawCurrent, driftInCurrent } from './current';
 import { coastDistance, createHelmState, HELM, type HelmInput, keyHeaveShare, NO_INPUT, steer } from './helm';
 import { LEVELS, levelCourse, MAX_BEACONS } from './levels';
 import {
@@ -531,7 +532,11 @@ function stepWorld(world: PhysicsWorld): void {
   const vertical = input.dive === input.rise ? 0 : input.dive ? -1 : 1;
   if (vertical !== 0 && vertical !== lastVertical) sound.launch(0.25);
   lastVertical = vertical;
-  steer(world, handles, input, state);
+  // The level's current at the hull's depth (./current.ts): the helm steers through the water, and
+  // the hull's drag acts on its velocity through it.
+  const water = currentAt(params.level, world.components.Position.y[handles.hull]!);
+  steer(world, handles, input, state, water);
+  driftInCurrent(world, handles, water);
   if (state.mode === 'diving' || state.mode === 'rising') heaveTiming.note(world.time, state.holdY);
   // Waves: the sea's surface bobs (the hull rides it).
   const sea = world.components.FluidRegion;
@@ -2172,6 +2177,8 @@ function draw(): void {
       }
     }
   }
+  // The level's current (./current.ts): specks drifting with the water, streaked the way it flows.
+  drawCurrent(g, params.level, left, right, cy - H / k / 2, cy + H / k / 2, t, k, sx, sy);
   drawFish(g, left, right, t, k, sx, sy, bedAt, hxw, hyw);
   drawGlows(t, k, sx, sy, left, right);
   showGlowHint(
@@ -2347,7 +2354,10 @@ function draw(): void {
     // The words from the glide the boat would make if let go now: while the screw drives, when to let
     // go; gliding already, only a glide that would carry past the beacon is told (Astern).
     const words = letGoHint(Math.max(0, along), coastDistance(c.Mass.value[e]!, Math.max(0, vAlong), state.throttle, world.dt));
+    // The hint is level 1's lesson only: later levels leave the judging of the glide to the pilot
+    // (and their currents carry a boat let go on, ./current.ts).
     const fast =
+      params.level === 1 &&
       !ridge &&
       !state.over &&
       along > 0 &&
