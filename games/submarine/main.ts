@@ -765,6 +765,7 @@ const game = await startPixiGame({
     { keys: '↓ ↑ / S W', action: 'dive / rise (let go: stop at the line)', touch: 'stick ↓ ↑' },
     { keys: '← → / A D', action: 'screw astern / ahead', touch: 'stick ← →' },
     { keys: 'Q / E', action: 'nose down / up', touch: 'Nose ↘ / ↗' },
+    { keys: 'mouse', action: 'press and drag on the sea: steer like a stick', touch: '' },
     { keys: '◯', action: 'beacon: touch its yellow ring with any part of the boat to collect it', touch: '◯' },
     { keys: '●', action: GLOW_LEGEND, touch: '●' },
   ],
@@ -1348,6 +1349,66 @@ for (const type of ['pointerdown', 'pointermove', 'pointerup', 'pointercancel', 
 // On a phone a larger stick (136 px, the knob's reach 56 px): the thumb grades its push over more
 // of its travel, and the rim is easier to find without looking.
 if (compact) stick.element.style.cssText += 'width: 136px; height: 136px;';
+/**
+ * A mouse pressed on the scene and dragged steers as the stick does: the drag from the press point,
+ * MOUSE_STICK_REACH px to the rim (right ahead, left astern, up rise, down dive; further is the
+ * rim), drawn as a ring round the press point and a knob (drawMouseStick). Let go, it centres.
+ */
+const MOUSE_STICK_REACH = 70;
+/** The mouse stick: the pointer dragging it (-1: none), its press point and where it is now, px on the scene. */
+const mouseStick = { id: -1, x0: 0, y0: 0, x: 0, y: 0 };
+const mouseStickRing = new Graphics();
+app.stage.addChild(mouseStickRing);
+app.canvas.style.cursor = 'crosshair';
+/** Where pointer event `e` lies on the scene, px. */
+function scenePoint(e: PointerEvent): [number, number] {
+  const r = app.canvas.getBoundingClientRect();
+  return [
+    ((e.clientX - r.left) * app.screen.width) / Math.max(1, r.width),
+    ((e.clientY - r.top) * app.screen.height) / Math.max(1, r.height),
+  ];
+}
+app.canvas.addEventListener('pointerdown', (e) => {
+  if (e.pointerType === 'touch' || e.button !== 0 || mouseStick.id >= 0) return;
+  [mouseStick.x0, mouseStick.y0] = scenePoint(e);
+  [mouseStick.x, mouseStick.y] = [mouseStick.x0, mouseStick.y0];
+  mouseStick.id = e.pointerId;
+  app.canvas.setPointerCapture(e.pointerId);
+  app.canvas.style.cursor = 'grabbing';
+  Object.assign(stickInput, { x: 0, y: 0, held: true });
+  timeControls(e.timeStamp);
+});
+app.canvas.addEventListener('pointermove', (e) => {
+  if (e.pointerId !== mouseStick.id) return;
+  [mouseStick.x, mouseStick.y] = scenePoint(e);
+  const dx = (mouseStick.x - mouseStick.x0) / MOUSE_STICK_REACH,
+    dy = -(mouseStick.y - mouseStick.y0) / MOUSE_STICK_REACH,
+    r = Math.max(1, Math.hypot(dx, dy));
+  stickInput.x = dx / r;
+  stickInput.y = dy / r;
+  timeControls(e.timeStamp);
+});
+for (const type of ['pointerup', 'pointercancel', 'lostpointercapture'] as const)
+  app.canvas.addEventListener(type, (e) => {
+    if (e.pointerId !== mouseStick.id) return;
+    mouseStick.id = -1;
+    app.canvas.style.cursor = 'crosshair';
+    Object.assign(stickInput, { x: 0, y: 0, held: false });
+    timeControls(e.timeStamp);
+  });
+/** Draws the mouse stick while it is dragged: its reach as a ring round the press point, a knob where the stick is. */
+function drawMouseStick(): void {
+  const m = mouseStickRing;
+  m.clear();
+  if (mouseStick.id < 0) return;
+  const kx = mouseStick.x0 + stickInput.x * MOUSE_STICK_REACH,
+    ky = mouseStick.y0 - stickInput.y * MOUSE_STICK_REACH;
+  m.circle(mouseStick.x0, mouseStick.y0, MOUSE_STICK_REACH)
+    .fill({ color: 0x0b1a2e, alpha: 0.25 })
+    .stroke({ color: 0xe8ecf1, width: 1.5, alpha: 0.55 });
+  m.moveTo(mouseStick.x0, mouseStick.y0).lineTo(kx, ky).stroke({ color: 0xe8ecf1, width: 2, alpha: 0.5 });
+  m.circle(kx, ky, 12).fill({ color: 0xe8ecf1, alpha: 0.7 });
+}
 // The touch hint (game-kit's card of gestures over the bottom of the scene, where the seabed is)
 // fades at the first touch anywhere, the stick and Nose buttons under the scene included, not only
 // at a touch on the scene.
@@ -1983,6 +2044,7 @@ function spawnBubbles(world: PhysicsWorld, angle: number): void {
 }
 
 function draw(): void {
+  drawMouseStick();
   const world = shell.world,
     c = world.components,
     e = handles.hull;
