@@ -2777,8 +2777,8 @@ function draw(): void {
   // One short line: the level ("L2"), the beacons (◯, as in the controls list), the clock against par (red once past it), the depth
   // (and the depth ordered), the speed ahead or astern, the score and the hull. The depth's rate,
   // the tanks, pitch and helm go in the desktop's info column (the depth gauge shows the order);
-  // on a phone it keeps to 390 px: no speed, no skipped names, "stopped by the seabed" shortened,
-  // in 12 px type.
+  // on a phone it keeps to 390 px: the speed as a mark ("▶4"), no skipped names, "stopped by the
+  // seabed" shortened, in 12 px type.
   const missedNames = missed.flatMap((m, i) => (m ? [beaconName(i)] : []));
   const missedText = missedNames.length > 0 && !compact ? ` (${missedNames.join(', ')} skipped)` : '';
   goal.textContent =
@@ -2787,7 +2787,7 @@ function draw(): void {
   // The clock turns red once par has passed.
   goal.style.color = !state.over && state.time > state.par ? '#ff9e8a' : '#ffe066';
   readoutText.textContent = compact
-    ? `${Math.max(0, depth).toFixed(0)}${ordered} m${stopped ? ' · seabed' : ''} · ${state.score} pts · `
+    ? `${Math.max(0, depth).toFixed(0)}${ordered} m${stopped ? ' · seabed' : ''} · ${speedMark(c.Velocity.x[e]!)} · ${state.score} pts · `
     : `${Math.max(0, depth).toFixed(0)}${ordered} m${stopped} · ${speedWords(c.Velocity.x[e]!)} · ${state.score} pts${streak} · `;
   showHull();
   seabedLine.textContent = `seabed ${(-floor).toFixed(0)} m`;
@@ -2798,6 +2798,16 @@ function draw(): void {
     `tanks ${(B.fore[e]! * 100).toFixed(0)}/${(B.aft[e]! * 100).toFixed(0)}% (neutral ${(SUBMARINE_NEUTRAL_FILL * 100).toFixed(0)}%)`,
     `helm: ${helm}`,
   ].join('\n');
+}
+
+/**
+ * The boat's speed along x for the phone's status line, signed by an arrow: "▶4" ahead, "◀2" astern
+ * (m/s; a tenth under 1 m/s), "■" under 0.2 m/s. `vx`: m/s, positive ahead.
+ */
+function speedMark(vx: number): string {
+  const v = Math.abs(vx);
+  if (v < 0.2) return '■';
+  return `${vx > 0 ? '▶' : '◀'}${v < 1 ? v.toFixed(1) : v.toFixed(0)}`;
 }
 
 /**
