@@ -404,6 +404,8 @@ export function steer(world: PhysicsWorld, handles: SubmarineHandles, input: Hel
     const ask = HELM.diveSpeed * heaveAsked;
     const from = Number.isNaN(state.holdY) ? y : Math.min(state.holdY, y);
     state.holdY = Math.min(Math.max(from - ask * dt, y - orderReach(vy, brake)), y - stopping(Math.min(0, vy), brake));
+    // Never ordered into the seabed: at least the hold's clearance over the bed under the hull.
+    state.holdY = Math.max(state.holdY, holdFloor(handles.seabed, c.Position.x[e]!, 0));
     vCmd = -ask;
   } else if (top > surface || (state.mode === 'surfaced' && top > surface - HELM.surfaceBand)) {
     // On the surface and not told to dive: tanks blown, the boat floats (Rise there does the same).
