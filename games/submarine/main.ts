@@ -2777,8 +2777,8 @@ function draw(): void {
   // One short line: the level ("L2"), the beacons (◯, as in the controls list), the clock against par (red once past it), the depth
   // (and the depth ordered), the speed ahead or astern, the score and the hull. The depth's rate,
   // the tanks, pitch and helm go in the desktop's info column (the depth gauge shows the order);
-  // on a phone it keeps to 390 px: the speed as a mark ("▶4"), no skipped names, "stopped by the
-  // seabed" shortened, in 12 px type.
+  // on a phone it keeps to 390 px: the speed as a mark ("▶4") after the depth ("82→87 m ▶4"), the
+  // score without "pts", no skipped names, "stopped by the seabed" shortened, in 12 px type.
   const missedNames = missed.flatMap((m, i) => (m ? [beaconName(i)] : []));
   const missedText = missedNames.length > 0 && !compact ? ` (${missedNames.join(', ')} skipped)` : '';
   goal.textContent =
@@ -2787,7 +2787,7 @@ function draw(): void {
   // The clock turns red once par has passed.
   goal.style.color = !state.over && state.time > state.par ? '#ff9e8a' : '#ffe066';
   readoutText.textContent = compact
-    ? `${Math.max(0, depth).toFixed(0)}${ordered} m${stopped ? ' · seabed' : ''} · ${speedMark(c.Velocity.x[e]!)} · ${state.score} pts · `
+    ? `${Math.max(0, depth).toFixed(0)}${ordered.replace(/ /g, '')} m ${speedMark(c.Velocity.x[e]!)}${stopped ? ' · seabed' : ''} · ${state.score} · `
     : `${Math.max(0, depth).toFixed(0)}${ordered} m${stopped} · ${speedWords(c.Velocity.x[e]!)} · ${state.score} pts${streak} · `;
   showHull();
   seabedLine.textContent = `seabed ${(-floor).toFixed(0)} m`;
