@@ -1701,6 +1701,10 @@ function drawDepthGauge(W: number, H: number, depth: number, order: number, bed:
     if (!pointer.visible || bw <= 0) continue;
     const box = [bx - 7, by - 2, bw + 14, bh + 4];
     if (gaugeDepth.visible) offFrame(gaugeDepth, box, top, bottom);
+    // The target's tag too (its pill is drawn here, so hiding it later would leave the pill under the label).
+    if (gaugeTarget.visible) offFrame(gaugeTarget, box, top, bottom);
+    if (gaugeTarget.visible && (overlaps(textBox(gaugeTarget), box, 2) || overlaps(textBox(gaugeTarget), textBox(gaugeDepth), 2)))
+      gaugeTarget.visible = false;
     for (const mark of gaugeMarks) if (mark.visible && overlaps(textBox(mark), box, 2)) mark.visible = false;
   }
   // Moved off the label, the boat's depth may lie on the frame again (a label beside the target's
@@ -1950,9 +1954,11 @@ function drawDepthLadder(t: number, sx: (x: number) => number, sy: (y: number) =
   let used = 0;
   if (ladder.alpha > 0) {
     // Kept far enough in from the view's left edge for its widest figure ("100 m", 11 px bold, about
-    // 36 px) left of the longer ticks, so on a phone with the boat near the edge no figure is cut off.
+    // 36 px, measured: mark.width) left of the longer ticks, and the view's shake at a hit (SHAKE_PX),
+    // so on a phone with the boat near the edge no figure is cut off.
+    const widest = Math.max(40, ...ladderMarks.map((m) => m.width + 4));
     const x = hxw - SUBMARINE.length / 2 - 3,
-      px = Math.max(sx(x), 9 + 3 + 40),
+      px = Math.max(sx(x), 9 + 3 + widest + SHAKE_PX),
       to = Number.isFinite(order) ? order : hyw;
     const hi = Math.min(-1, Math.max(hyw, to) + LADDER_REACH),
       lo = Math.min(hyw, to) - LADDER_REACH;
@@ -2628,6 +2634,14 @@ function draw(): void {
       [hx0 - hr, hy0 - hr, 2 * hr, 2 * hr],
       hyw < -HEADLIGHT.fromDepth ? [hxw, hyw, c.Angle.value[e]!] : null,
     );
+    // Last, never over the mine or ridge warning's tag (the moves off the ring and the bed may have put
+    // it back there): above the tag, or below it where above leaves the view.
+    const labelPill = [pointer.x - pointer.width / 2 - 7, pointer.y - pointer.height / 2 - 2, pointer.width + 14, pointer.height + 4];
+    if (mineWarning.text && overlaps(labelPill, mineWarning.box, 4)) {
+      const [, ty, , th] = mineWarning.box as [number, number, number, number];
+      const above = ty - pointer.height / 2 - 8;
+      pointer.y = above >= pointer.height / 2 + 4 ? above : ty + th + pointer.height / 2 + 8;
+    }
     aim.label = [pointer.x - pointer.width / 2, pointer.y - pointer.height / 2, pointer.width, pointer.height];
     aim.hull = [hx0 - hr, hy0 - hr, 2 * hr, 2 * hr];
     // The pickup banner ("Beacon 3 of 6") off the label's pill (on a phone it would be drawn over it):
