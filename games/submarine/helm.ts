@@ -358,9 +358,11 @@ export function holdFloor(seabed: SubmarineHandles['seabed'], x: number, vx: num
 /**
  * One step of the helm: reads the hull (position, velocity, angle, mass) and the sea's surface,
  * updates `state` from `input` and writes the ballast targets, the vertical thrusters and the screw
- * into the world. Call it before each `step(world)`.
+ * into the world. Call it before each `step(world)`. `current`: the water's horizontal velocity at
+ * the hull, m/s (default 0, still water; ./current.ts): the screw, the planes and the coasting brake
+ * work on the hull's speed through the water, so a boat let go stops in the water and drifts with it.
  */
-export function steer(world: PhysicsWorld, handles: SubmarineHandles, input: HelmInput, state: HelmState): void {
+export function steer(world: PhysicsWorld, handles: SubmarineHandles, input: HelmInput, state: HelmState, current = 0): void {
   const c = world.components,
     e = handles.hull,
     dt = world.dt,
@@ -390,7 +392,7 @@ export function steer(world: PhysicsWorld, handles: SubmarineHandles, input: Hel
   const neutral = SUBMARINE_NEUTRAL_FILL;
 
   // The boat under way brakes harder: its planes (./planes.ts) add up to their lift at full angle.
-  const u = c.Velocity.x[e]! * Math.cos(angle) + vy * Math.sin(angle);
+  const u = (c.Velocity.x[e]! - current) * Math.cos(angle) + vy * Math.sin(angle);
   const submerged = clamp((surface - (y - S.height / 2)) / S.height, 0, 1);
   const brake = HELM.brake + (HELM.planesShare * Math.abs(planeLift(PLANES.maxAngle, u, submerged))) / mass;
   // Vertical: the depth ordered (state.holdY), the speed asked for (NaN: none asked) and the tanks' mean target.
@@ -402,6 +404,8 @@ export function steer(world: PhysicsWorld, handles: SubmarineHandles, input: Hel
     const ask = HELM.diveSpeed * heaveAsked;
     const from = Number.isNaN(state.holdY) ? y : Math.min(state.holdY, y);
     state.holdY = Math.min(Math.max(from - ask * dt, y - orderReach(vy, brake)), y - stopping(Math.min(0, vy), brake));
+    // Never ordered into the seabed: at least the hold's clearance over the bed under the hull.
+    state.holdY = Math.max(state.holdY, holdFloor(handles.seabed, c.Position.x[e]!, 0));
     vCmd = -ask;
   } else if (top > surface || (state.mode === 'surfaced' && top > surface - HELM.surfaceBand)) {
     // On the surface and not told to dive: tanks blown, the boat floats (Rise there does the same).
@@ -489,7 +493,7 @@ export function steer(world: PhysicsWorld, handles: SubmarineHandles, input: Hel
   // going ahead (or Ahead backing), brake and screw stop it together. It brakes the horizontal
   // speed only (pushing horizontally: in the hull's frame cos / -sin of its angle), so it never
   // slows a dive or a climb of a pitched boat.
-  const ux = c.Velocity.x[e]!;
+  const ux = c.Velocity.x[e]! - current;
   const along = keep || (input.ahead && !input.astern && ux >= 0) || (input.astern && !input.ahead && ux <= 0);
   const brakeForce = along ? 0 : coastBrake(mass, ux, state.throttle, input.astern && !input.ahead);
   const push = screwPush(mass, u, state.throttle);

@@ -54,6 +54,7 @@ import {
   seabedBetween,
 } from './beacons';
 import { drawBoat, HEADLIGHT, inHeadlight } from './boat-drawing';
+import { currentAt, drawCurrent, driftInCurrent } from './current';
 import { coastDistance, createHelmState, HELM, type HelmInput, keyHeaveShare, NO_INPUT, steer } from './helm';
 import { LEVELS, levelCourse, MAX_BEACONS } from './levels';
 import {
@@ -531,7 +532,11 @@ function stepWorld(world: PhysicsWorld): void {
   const vertical = input.dive === input.rise ? 0 : input.dive ? -1 : 1;
   if (vertical !== 0 && vertical !== lastVertical) sound.launch(0.25);
   lastVertical = vertical;
-  steer(world, handles, input, state);
+  // The level's current at the hull's depth (./current.ts): the helm steers through the water, and
+  // the hull's drag acts on its velocity through it.
+  const water = currentAt(params.level, world.components.Position.y[handles.hull]!);
+  steer(world, handles, input, state, water);
+  driftInCurrent(world, handles, water);
   if (state.mode === 'diving' || state.mode === 'rising') heaveTiming.note(world.time, state.holdY);
   // Waves: the sea's surface bobs (the hull rides it).
   const sea = world.components.FluidRegion;
@@ -760,6 +765,7 @@ const game = await startPixiGame({
     { keys: '↓ ↑ / S W', action: 'dive / rise (let go: stop at the line)', touch: 'stick ↓ ↑' },
     { keys: '← → / A D', action: 'screw astern / ahead', touch: 'stick ← →' },
     { keys: 'Q / E', action: 'nose down / up', touch: 'Nose ↘ / ↗' },
+    { keys: 'mouse', action: 'press and drag on the sea: steer like a stick', touch: '' },
     { keys: '◯', action: 'beacon: touch its yellow ring with any part of the boat to collect it', touch: '◯' },
     { keys: '●', action: GLOW_LEGEND, touch: '●' },
   ],
@@ -1343,6 +1349,66 @@ for (const type of ['pointerdown', 'pointermove', 'pointerup', 'pointercancel', 
 // On a phone a larger stick (136 px, the knob's reach 56 px): the thumb grades its push over more
 // of its travel, and the rim is easier to find without looking.
 if (compact) stick.element.style.cssText += 'width: 136px; height: 136px;';
+/**
+ * A mouse pressed on the scene and dragged steers as the stick does: the drag from the press point,
+ * MOUSE_STICK_REACH px to the rim (right ahead, left astern, up rise, down dive; further is the
+ * rim), drawn as a ring round the press point and a knob (drawMouseStick). Let go, it centres.
+ */
+const MOUSE_STICK_REACH = 70;
+/** The mouse stick: the pointer dragging it (-1: none), its press point and where it is now, px on the scene. */
+const mouseStick = { id: -1, x0: 0, y0: 0, x: 0, y: 0 };
+const mouseStickRing = new Graphics();
+app.stage.addChild(mouseStickRing);
+app.canvas.style.cursor = 'crosshair';
+/** Where pointer event `e` lies on the scene, px. */
+function scenePoint(e: PointerEvent): [number, number] {
+  const r = app.canvas.getBoundingClientRect();
+  return [
+    ((e.clientX - r.left) * app.screen.width) / Math.max(1, r.width),
+    ((e.clientY - r.top) * app.screen.height) / Math.max(1, r.height),
+  ];
+}
+app.canvas.addEventListener('pointerdown', (e) => {
+  if (e.pointerType === 'touch' || e.button !== 0 || mouseStick.id >= 0) return;
+  [mouseStick.x0, mouseStick.y0] = scenePoint(e);
+  [mouseStick.x, mouseStick.y] = [mouseStick.x0, mouseStick.y0];
+  mouseStick.id = e.pointerId;
+  app.canvas.setPointerCapture(e.pointerId);
+  app.canvas.style.cursor = 'grabbing';
+  Object.assign(stickInput, { x: 0, y: 0, held: true });
+  timeControls(e.timeStamp);
+});
+app.canvas.addEventListener('pointermove', (e) => {
+  if (e.pointerId !== mouseStick.id) return;
+  [mouseStick.x, mouseStick.y] = scenePoint(e);
+  const dx = (mouseStick.x - mouseStick.x0) / MOUSE_STICK_REACH,
+    dy = -(mouseStick.y - mouseStick.y0) / MOUSE_STICK_REACH,
+    r = Math.max(1, Math.hypot(dx, dy));
+  stickInput.x = dx / r;
+  stickInput.y = dy / r;
+  timeControls(e.timeStamp);
+});
+for (const type of ['pointerup', 'pointercancel', 'lostpointercapture'] as const)
+  app.canvas.addEventListener(type, (e) => {
+    if (e.pointerId !== mouseStick.id) return;
+    mouseStick.id = -1;
+    app.canvas.style.cursor = 'crosshair';
+    Object.assign(stickInput, { x: 0, y: 0, held: false });
+    timeControls(e.timeStamp);
+  });
+/** Draws the mouse stick while it is dragged: its reach as a ring round the press point, a knob where the stick is. */
+function drawMouseStick(): void {
+  const m = mouseStickRing;
+  m.clear();
+  if (mouseStick.id < 0) return;
+  const kx = mouseStick.x0 + stickInput.x * MOUSE_STICK_REACH,
+    ky = mouseStick.y0 - stickInput.y * MOUSE_STICK_REACH;
+  m.circle(mouseStick.x0, mouseStick.y0, MOUSE_STICK_REACH)
+    .fill({ color: 0x0b1a2e, alpha: 0.25 })
+    .stroke({ color: 0xe8ecf1, width: 1.5, alpha: 0.55 });
+  m.moveTo(mouseStick.x0, mouseStick.y0).lineTo(kx, ky).stroke({ color: 0xe8ecf1, width: 2, alpha: 0.5 });
+  m.circle(kx, ky, 12).fill({ color: 0xe8ecf1, alpha: 0.7 });
+}
 // The touch hint (game-kit's card of gestures over the bottom of the scene, where the seabed is)
 // fades at the first touch anywhere, the stick and Nose buttons under the scene included, not only
 // at a touch on the scene.
@@ -1635,6 +1701,10 @@ function drawDepthGauge(W: number, H: number, depth: number, order: number, bed:
     if (!pointer.visible || bw <= 0) continue;
     const box = [bx - 7, by - 2, bw + 14, bh + 4];
     if (gaugeDepth.visible) offFrame(gaugeDepth, box, top, bottom);
+    // The target's tag too (its pill is drawn here, so hiding it later would leave the pill under the label).
+    if (gaugeTarget.visible) offFrame(gaugeTarget, box, top, bottom);
+    if (gaugeTarget.visible && (overlaps(textBox(gaugeTarget), box, 2) || overlaps(textBox(gaugeTarget), textBox(gaugeDepth), 2)))
+      gaugeTarget.visible = false;
     for (const mark of gaugeMarks) if (mark.visible && overlaps(textBox(mark), box, 2)) mark.visible = false;
   }
   // Moved off the label, the boat's depth may lie on the frame again (a label beside the target's
@@ -1884,9 +1954,11 @@ function drawDepthLadder(t: number, sx: (x: number) => number, sy: (y: number) =
   let used = 0;
   if (ladder.alpha > 0) {
     // Kept far enough in from the view's left edge for its widest figure ("100 m", 11 px bold, about
-    // 36 px) left of the longer ticks, so on a phone with the boat near the edge no figure is cut off.
+    // 36 px, measured: mark.width) left of the longer ticks, and the view's shake at a hit (SHAKE_PX),
+    // so on a phone with the boat near the edge no figure is cut off.
+    const widest = Math.max(40, ...ladderMarks.map((m) => m.width + 4));
     const x = hxw - SUBMARINE.length / 2 - 3,
-      px = Math.max(sx(x), 9 + 3 + 40),
+      px = Math.max(sx(x), 9 + 3 + widest + SHAKE_PX),
       to = Number.isFinite(order) ? order : hyw;
     const hi = Math.min(-1, Math.max(hyw, to) + LADDER_REACH),
       lo = Math.min(hyw, to) - LADDER_REACH;
@@ -1978,6 +2050,7 @@ function spawnBubbles(world: PhysicsWorld, angle: number): void {
 }
 
 function draw(): void {
+  drawMouseStick();
   const world = shell.world,
     c = world.components,
     e = handles.hull;
@@ -2172,6 +2245,8 @@ function draw(): void {
       }
     }
   }
+  // The level's current (./current.ts): specks drifting with the water, streaked the way it flows.
+  drawCurrent(g, params.level, left, right, cy - H / k / 2, cy + H / k / 2, t, k, sx, sy);
   drawFish(g, left, right, t, k, sx, sy, bedAt, hxw, hyw);
   drawGlows(t, k, sx, sy, left, right);
   showGlowHint(
@@ -2347,7 +2422,10 @@ function draw(): void {
     // The words from the glide the boat would make if let go now: while the screw drives, when to let
     // go; gliding already, only a glide that would carry past the beacon is told (Astern).
     const words = letGoHint(Math.max(0, along), coastDistance(c.Mass.value[e]!, Math.max(0, vAlong), state.throttle, world.dt));
+    // The hint is level 1's lesson only: later levels leave the judging of the glide to the pilot
+    // (and their currents carry a boat let go on, ./current.ts).
     const fast =
+      params.level === 1 &&
       !ridge &&
       !state.over &&
       along > 0 &&
@@ -2556,6 +2634,14 @@ function draw(): void {
       [hx0 - hr, hy0 - hr, 2 * hr, 2 * hr],
       hyw < -HEADLIGHT.fromDepth ? [hxw, hyw, c.Angle.value[e]!] : null,
     );
+    // Last, never over the mine or ridge warning's tag (the moves off the ring and the bed may have put
+    // it back there): above the tag, or below it where above leaves the view.
+    const labelPill = [pointer.x - pointer.width / 2 - 7, pointer.y - pointer.height / 2 - 2, pointer.width + 14, pointer.height + 4];
+    if (mineWarning.text && overlaps(labelPill, mineWarning.box, 4)) {
+      const [, ty, , th] = mineWarning.box as [number, number, number, number];
+      const above = ty - pointer.height / 2 - 8;
+      pointer.y = above >= pointer.height / 2 + 4 ? above : ty + th + pointer.height / 2 + 8;
+    }
     aim.label = [pointer.x - pointer.width / 2, pointer.y - pointer.height / 2, pointer.width, pointer.height];
     aim.hull = [hx0 - hr, hy0 - hr, 2 * hr, 2 * hr];
     // The pickup banner ("Beacon 3 of 6") off the label's pill (on a phone it would be drawn over it):
@@ -2705,8 +2791,8 @@ function draw(): void {
   // One short line: the level ("L2"), the beacons (◯, as in the controls list), the clock against par (red once past it), the depth
   // (and the depth ordered), the speed ahead or astern, the score and the hull. The depth's rate,
   // the tanks, pitch and helm go in the desktop's info column (the depth gauge shows the order);
-  // on a phone it keeps to 390 px: no speed, no skipped names, "stopped by the seabed" shortened,
-  // in 12 px type.
+  // on a phone it keeps to 390 px: the speed as a mark ("▶4") after the depth ("82→87 m ▶4"), the
+  // score without "pts", no skipped names, "stopped by the seabed" shortened, in 12 px type.
   const missedNames = missed.flatMap((m, i) => (m ? [beaconName(i)] : []));
   const missedText = missedNames.length > 0 && !compact ? ` (${missedNames.join(', ')} skipped)` : '';
   goal.textContent =
@@ -2715,7 +2801,7 @@ function draw(): void {
   // The clock turns red once par has passed.
   goal.style.color = !state.over && state.time > state.par ? '#ff9e8a' : '#ffe066';
   readoutText.textContent = compact
-    ? `${Math.max(0, depth).toFixed(0)}${ordered} m${stopped ? ' · seabed' : ''} · ${state.score} pts · `
+    ? `${Math.max(0, depth).toFixed(0)}${ordered.replace(/ /g, '')} m ${speedMark(c.Velocity.x[e]!)}${stopped ? ' · seabed' : ''} · ${state.score} · `
     : `${Math.max(0, depth).toFixed(0)}${ordered} m${stopped} · ${speedWords(c.Velocity.x[e]!)} · ${state.score} pts${streak} · `;
   showHull();
   seabedLine.textContent = `seabed ${(-floor).toFixed(0)} m`;
@@ -2726,6 +2812,16 @@ function draw(): void {
     `tanks ${(B.fore[e]! * 100).toFixed(0)}/${(B.aft[e]! * 100).toFixed(0)}% (neutral ${(SUBMARINE_NEUTRAL_FILL * 100).toFixed(0)}%)`,
     `helm: ${helm}`,
   ].join('\n');
+}
+
+/**
+ * The boat's speed along x for the phone's status line, signed by an arrow: "▶4" ahead, "◀2" astern
+ * (m/s; a tenth under 1 m/s), "■" under 0.2 m/s. `vx`: m/s, positive ahead.
+ */
+function speedMark(vx: number): string {
+  const v = Math.abs(vx);
+  if (v < 0.2) return '■';
+  return `${vx > 0 ? '▶' : '◀'}${v < 1 ? v.toFixed(1) : v.toFixed(0)}`;
 }
 
 /**

@@ -3,10 +3,11 @@
  * normal, Coulomb friction along it) and the rule for when a contact damages the hull. Headless (no
  * drawing or sound), so it is tested in node.
  *
- * A contact costs a hit only when the hull comes in faster than `SEABED.hitSpeed` along the bed's
- * normal, and at most one per `SEABED.cooldown`, which every contact after a hit renews: a boat
- * resting on the bed, or bumping along a ridge after an impact, is not hurt again until it has been
- * clear of the bed for the cooldown (one contact, one hit).
+ * One rule for damage: a contact costs a hit when the hull comes in faster than `SEABED.hitSpeed`
+ * along the bed's normal, or when it has scraped along the bed (sliding faster than
+ * `SEABED.scrapeSpeed`) for `SEABED.cooldown` since the last hit or since the scrape began; and at
+ * most one hit per `SEABED.cooldown`. A boat resting on the bed is not hurt again; one driven on
+ * along it loses a hull bar every `SEABED.cooldown` s until it rises off.
  *
  * Also the warning of the seabed on the boat's course (`bedAhead`), told by the hull as the mines are.
  */
@@ -23,8 +24,10 @@ export const SEABED = Object.freeze({
   friction: 0.3,
   /** Approach speed along the bed's normal above which a contact damages the hull, m/s. */
   hitSpeed: 1.5,
-  /** After a hit, further contacts cost nothing until the hull has been off the bed this long, s. */
+  /** After a hit, contacts cost nothing for this long, s; scraping on along the bed costs a hit each time this long passes. */
   cooldown: 2,
+  /** Sliding speed along the bed above which a contact scrapes the hull, m/s (below it the boat rests or creeps on the bed). */
+  scrapeSpeed: 1,
   /**
    * Speed at which the contact pushes a hull that has sunk into the bed back out, m/s per m of
    * penetration (Baumgarte stabilisation: the contact's impulses alone let a resting heavy hull creep
@@ -47,6 +50,8 @@ export interface SeabedState {
    * the hull down the bed's slope into the next kink.
    */
   diveStopped: boolean;
+  /** Game time the hull began scraping along the bed (or took its last hit while scraping), s; NaN or absent while it is not. */
+  scrapeSince?: number;
 }
 
 /**
@@ -82,9 +87,10 @@ export type SeabedContact = '' | 'touch' | 'hit';
  * leaves it moving out at `restitution` times its approach speed (or at the push-out speed, if
  * larger), plus friction along the bed up to `friction` times that impulse. Updates `state` (a
  * contact while `diving`, Dive held, sets `state.diveStopped`) and says
- * whether the contact costs a hit (approach speed over `SEABED.hitSpeed`, and the game time `time`,
- * s, past `state.spared`; a hit sets `state.spared` to `time + SEABED.cooldown`, and so does any
- * contact while it is spared, so bumping on along the bed after a hit costs nothing). On a contact,
+ * whether the contact costs a hit (approach speed over `SEABED.hitSpeed`, or sliding along the bed
+ * faster than `SEABED.scrapeSpeed` for `SEABED.cooldown` s, with the game time `time`, s, past
+ * `state.spared`; a hit sets `state.spared` to `time + SEABED.cooldown` and restarts the scrape's
+ * clock, so scraping on costs a hit every cooldown). On a contact,
  * `at` (if given) is set to the point of the hull that is deepest in the bed (bow, stern or keel
  * centre; x, y, m), where the hull struck it.
  */
@@ -122,7 +128,10 @@ export function touchSeabed(
     }
   }
   state.touching = depth > 0;
-  if (!state.touching) return '';
+  if (!state.touching) {
+    state.scrapeSince = Number.NaN;
+    return '';
+  }
   if (at) {
     at.x = px;
     at.y = py;
@@ -136,6 +145,10 @@ export function touchSeabed(
   const vx = c.Velocity.x[e]!,
     vy = c.Velocity.y[e]!;
   const vn = vx * nx + vy * ny; // negative: into the bed
+  // Sliding along the bed faster than scrapeSpeed: the scrape's clock runs from its start.
+  const sliding = Math.abs(vx * ny - vy * nx) > SEABED.scrapeSpeed;
+  if (!sliding) state.scrapeSince = Number.NaN;
+  else if (!Number.isFinite(state.scrapeSince ?? Number.NaN)) state.scrapeSince = time;
   const out = Math.max(-SEABED.restitution * vn, Math.min(SEABED.pushOutMax, SEABED.pushOutRate * depth));
   if (vn < out) {
     const m = c.Mass.value[e]!;
@@ -147,13 +160,11 @@ export function touchSeabed(
     const jt = -Math.sign(vt) * Math.min(m * Math.abs(vt), SEABED.friction * jn);
     applyImpulse(world, e, [jn * nx + jt * tx, jn * ny + jt * ty]);
   }
-  if (time < state.spared) {
-    // Still the contact that cost the last hit (or one within the cooldown of it): it costs none.
-    state.spared = Math.max(state.spared, time + SEABED.cooldown);
-    return 'touch';
-  }
-  if (-vn > SEABED.hitSpeed) {
+  // Within the cooldown of the last hit: no hit.
+  if (time < state.spared) return 'touch';
+  if (-vn > SEABED.hitSpeed || (sliding && time - state.scrapeSince! >= SEABED.cooldown)) {
     state.spared = time + SEABED.cooldown;
+    if (sliding) state.scrapeSince = time;
     return 'hit';
   }
   return 'touch';
@@ -169,6 +180,12 @@ export const BED_WARN_MARGIN = 0.5;
  * in time without calling every dive toward a deep beacon a danger.
  */
 export const BED_HEAVE_TIME = 2;
+/**
+ * The same for a ridge (the bed rising 1 m or more over the bed under the hull), s: a rising bed
+ * ahead meets a diving boat sooner than its speed down says, and rising over it takes the boat's
+ * stop and a climb, so it is told a second earlier.
+ */
+export const BED_RIDGE_HEAVE_TIME = 3;
 
 /** The seabed on the boat's course (`bedAhead`). */
 export interface BedAhead {
@@ -235,9 +252,9 @@ export function bedAhead(
       const order = Math.max(holdY, holdFloor(seabed, cx, vx));
       hit = y + Math.max(-dive * t, Math.min(climb * t, order - y)) - H < bed + BED_WARN_MARGIN;
     }
-    // Held Dive or Rise (within `BED_HEAVE_TIME`: a dive toward a deep beacon is not warned of the
+    // Held Dive or Rise (within `BED_HEAVE_TIME`, a ridge within `BED_RIDGE_HEAVE_TIME`: a dive toward a deep beacon is not warned of the
     // floor while there is room to stop over it), or no order: on as it goes.
-    if (!hit && onAsGoing && (!options.heaving || t <= BED_HEAVE_TIME)) {
+    if (!hit && onAsGoing && (!options.heaving || t <= (bed >= now + 1 ? BED_RIDGE_HEAVE_TIME : BED_HEAVE_TIME))) {
       const v = options.heaving ? (vy >= 0 ? Math.max(vy, share * climb) : Math.min(vy, -share * dive)) : vy;
       hit = y + v * t - H < bed + BED_WARN_MARGIN;
     }

@@ -590,7 +590,7 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
       const order = after[0]!.order;
       return {
         movedWhenOrdered: first ? y0 - first.y : Number.NaN,
-        shown: trace.some((p) => / → /.test(p.text)),
+        shown: trace.some((p) => /\d ?→ ?\d/.test(p.text)),
         past: Math.max(...after.map((p) => order - p.y)),
         end: after[after.length - 1]!.y - order,
         orderKept: after.every((p) => p.order === order),
@@ -1446,6 +1446,8 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
       // Paused (the view still drawn), so the helm keeps the figures put.
       w.paused = true;
       c.Position.y[e] = -104;
+      // The longest speed too: 12 m/s astern (a phone's "◀12", a desktop's "astern 12 m/s").
+      c.Velocity.x[e] = -12;
       Object.assign(w.state, { holdY: -110, score: 12340, streak: 5, hits: 1, time: 605 });
       await new Promise((r) => setTimeout(r, 400));
       const el = document.querySelector<HTMLElement>('[data-hud="gauges"]')!;
@@ -1460,7 +1462,8 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
       };
     });
     expect(row.text).toContain('12340');
-    expect(row.text).toContain('104 → 110 m');
+    expect(row.text).toContain(device === 'phone' ? '104→110 m' : '104 → 110 m');
+    expect(row.text).toContain(device === 'phone' ? '◀12' : 'astern 12 m/s');
     expect(row.height, `${device}: "${row.text}" on more than one line`).toBeLessThan(1.5 * row.line);
     expect(row.scroll).toBeLessThanOrEqual(row.client);
     expect(g.errors).toEqual([]);

@@ -11,6 +11,7 @@ import { createPhysicsWorld, step } from '@bitphysics/physics';
 import { SUBMARINE_NEUTRAL_FILL, submarine } from '@bitphysics/projects';
 import { describe, expect, it } from 'vitest';
 import { layCourse } from '../../games/submarine/beacons';
+import { currentAt, driftInCurrent } from '../../games/submarine/current';
 import { createHelmState, HELM, type HelmInput, type HelmState, steer } from '../../games/submarine/helm';
 import { LEVELS, levelCourse } from '../../games/submarine/levels';
 import {
@@ -112,7 +113,8 @@ describe('submarine levels', () => {
 
 /**
  * The mines test's fair pilot (test/games/submarine-mines.test.ts) on level `level`'s course for
- * page seed `seed`: from each beacon at full ahead (HELM.topSpeed), ordered to the depth of the leg's
+ * page seed `seed`, in the level's current (games/submarine/current.ts): from each beacon at full
+ * ahead (HELM.topSpeed through the water), ordered to the depth of the leg's
  * first mine (dead on for it), holding Rise or Dive as the warning (mineAhead) tells from
  * MINE_REACTION s after it comes. Returns the mines met, the least room past contact (m) and the
  * earliest warning (s before contact).
@@ -132,7 +134,7 @@ function fairRun(level: number, seed: number): { mines: number; closest: number;
     h.seabed.y.set(scene.seabed.y);
     const c = world.components,
       e = h.hull;
-    c.Velocity.x[e] = HELM.topSpeed;
+    c.Velocity.x[e] = HELM.topSpeed + currentAt(level, ay);
     const state: HelmState = { ...createHelmState(SUBMARINE_NEUTRAL_FILL), throttle: 1, holdY: placed[on[0]!]!.y, mode: 'holding' };
     const live = placed.map(() => true);
     const warnedAt = new Map<number, number>();
@@ -159,7 +161,10 @@ function fairRun(level: number, seed: number): { mines: number; closest: number;
         ahead: true,
         astern: false,
       };
-      steer(world, h, input, state);
+      // The level's current at the hull (games/submarine/current.ts): the screw drives through the water.
+      const water = currentAt(level, c.Position.y[e]!);
+      steer(world, h, input, state, water);
+      driftInCurrent(world, h, water);
       step(world);
       on.forEach((i, k) => {
         near[k] = Math.min(near[k]!, hullDistance(c.Position.x[e]!, c.Position.y[e]!, c.Angle.value[e]!, placed[i]!.x, placed[i]!.y));

@@ -180,7 +180,7 @@ describe('submarine on the seabed', () => {
     expect(b.helm.holdY).toBeGreaterThan(held + 5); // the order was raised, not the hull knocked up
   });
 
-  it('one contact, one hit: bumping on along the bed after a hit costs none until it has been clear of it for the cooldown', () => {
+  it('at most one hit per cooldown: a bump within it costs none, a hard bump past it costs one', () => {
     const b = boat(0.5);
     const c = b.world.components,
       e = b.h.hull;
@@ -196,12 +196,43 @@ describe('submarine on the seabed', () => {
       return touchSeabed(b.world, b.h, b.bed, t);
     };
     expect(bump(10)).toBe('hit');
-    // Bumps 1.5 s apart, each within the cooldown of the one before: the same contact, no hit.
+    // 1.5 s on, within the cooldown of the hit: none.
     expect(bump(11.5)).toBe('touch');
-    expect(bump(13)).toBe('touch');
-    expect(bump(14.5)).toBe('touch');
-    // Clear of the bed for longer than the cooldown: a new contact, a new hit.
-    expect(bump(14.5 + SEABED.cooldown + 0.1)).toBe('hit');
+    // Past the cooldown a hard bump is a hit again, whether or not the hull left the bed between.
+    expect(bump(10 + SEABED.cooldown + 0.1)).toBe('hit');
+  });
+
+  it('scraping along the bed costs a hit every cooldown; resting on it costs none', () => {
+    /** The keel 0.05 m in the bed at x = 0, held sliding along it at `speed` m/s for 9 s: the game times of the hits. */
+    const scrape = (speed: number): number[] => {
+      const b = boat(0.5);
+      const c = b.world.components,
+        e = b.h.hull;
+      const hits: number[] = [];
+      for (let t = 0; t < 9; t += b.world.dt) {
+        const x = speed * t;
+        c.Position.x[e] = x;
+        c.Position.y[e] = seabedHeight(b.h.seabed, x) + SUBMARINE.height / 2 - 0.05;
+        c.Angle.value[e] = 0;
+        // Along the bed's slope there (its tangent), no speed into it.
+        const slope = seabedHeight(b.h.seabed, x + 0.5) - seabedHeight(b.h.seabed, x - 0.5);
+        c.Velocity.x[e] = speed / Math.hypot(1, slope);
+        c.Velocity.y[e] = (speed * slope) / Math.hypot(1, slope);
+        if (touchSeabed(b.world, b.h, b.bed, t) === 'hit') hits.push(t);
+      }
+      return hits;
+    };
+    const sliding = scrape(4);
+    console.log(`scraping at 4 m/s for 9 s: hits at ${sliding.map((t) => t.toFixed(2)).join(', ')} s`);
+    // No impact (it slides along the tangent): the first hit after a cooldown of scraping, then one every cooldown.
+    expect(sliding.length).toBe(Math.floor(9 / SEABED.cooldown));
+    // Each a cooldown after the one before (the scrape's start for the first), to within a step (1/60 s) and rounding.
+    sliding.forEach((t, i) => {
+      const gap = t - (i === 0 ? 0 : sliding[i - 1]!);
+      expect(gap).toBeGreaterThanOrEqual(SEABED.cooldown - 1e-9);
+      expect(gap).toBeLessThan(SEABED.cooldown + 1.5 / 60);
+    });
+    expect(scrape(0.5)).toEqual([]);
   });
 
   it('the seabed warning: a level course toward a ridge is warned of in time to rise; a hovering boat and a held order over it are not', () => {
