@@ -81,8 +81,8 @@ function hash2(i: number, j: number): number {
  * Draws level `level`'s current (drawing only) between `left` and `right` and from `bottom` up to
  * `top` (world m): rows of specks SPECK_DY m apart, each carried along x at the water's speed at
  * its depth (wrapping within its SPECK_DX m cell) with a streak behind it 0.9 s of that speed long,
- * fainter where the flow is slower; nothing in still water. `scale` px a metre, through `sx` and
- * `sy` (world m to screen px), at time `t` s.
+ * fainter where the flow is slower; nothing in still water, and none under the seabed (`bed`: its
+ * height, m, at x). `scale` px a metre, through `sx` and `sy` (world m to screen px), at time `t` s.
  */
 export function drawCurrent(
   g: Graphics,
@@ -95,6 +95,7 @@ export function drawCurrent(
   scale: number,
   sx: (x: number) => number,
   sy: (y: number) => number,
+  bed: (x: number) => number,
 ): void {
   const most = CURRENTS[level - 1]?.speed ?? 0;
   if (most === 0) return;
@@ -106,6 +107,7 @@ export function drawCurrent(
       if (Math.abs(u) < 0.15) continue;
       const along = ((((h >>> 8) & 255) / 256) * SPECK_DX + u * t) % SPECK_DX;
       const x = (i + (along < 0 ? along + SPECK_DX : along) / SPECK_DX) * SPECK_DX;
+      if (y < bed(x)) continue;
       const px = sx(x),
         py = sy(y),
         tail = Math.max(3, Math.abs(u) * 0.9 * scale) * Math.sign(u);

@@ -2246,7 +2246,7 @@ function draw(): void {
     }
   }
   // The level's current (./current.ts): specks drifting with the water, streaked the way it flows.
-  drawCurrent(g, params.level, left, right, cy - H / k / 2, cy + H / k / 2, t, k, sx, sy);
+  drawCurrent(g, params.level, left, right, cy - H / k / 2, cy + H / k / 2, t, k, sx, sy, bedAt);
   drawFish(g, left, right, t, k, sx, sy, bedAt, hxw, hyw);
   drawGlows(t, k, sx, sy, left, right);
   showGlowHint(
