@@ -596,7 +596,8 @@ describe('projects', () => {
     // Named by its letter (the first beacon is A), the target held until collected.
     expect(aim.text).toBe(`target A: ${aim.text.match(/\d+ m ahead/)![0]}, ${Math.abs(aim.dy).toFixed(0)} m down`);
     // The goal and the clock are stated above the scene.
-    expect(await g.page.locator('[data-hud="goal"]').textContent()).toMatch(/^Beacons 0\/6 · 0:\d\d \/ par \d:\d\d$/);
+    // (Level, beacons collected of the course's, the clock against par: "L1 · ◯ 0/6 · 0:00/2:20".)
+    expect(await g.page.locator('[data-hud="goal"]').textContent()).toMatch(/^L1 · ◯ 0\/6 · 0:\d\d\/\d:\d\d$/);
     const x0 = await g.page.evaluate(() => {
       const w = window.game as unknown as Game & { hull(): number };
       return w.world.components.Position.x[w.hull()] as number;
@@ -704,11 +705,12 @@ describe('projects', () => {
       await g.runUntil((n) => (window.game as unknown as Sub).state.collected === n, i + 1, { maxFrames: 600 });
     }
     await g.runUntil(() => (window.game as unknown as Sub).state.over === 'won', null, { maxFrames: 600 });
-    await g.page.getByRole('button', { name: 'Play again ▶', exact: true }).waitFor({ state: 'visible' });
+    // Won on level 1 of 3: the card's button goes on to level 2.
+    await g.page.getByRole('button', { name: 'Next level 2 ▶', exact: true }).waitFor({ state: 'visible' });
     const won = await g.page.evaluate(() => (window.game as unknown as Sub).state);
     expect(won.time).toBeLessThan(won.par);
     expect(await g.page.evaluate(() => (window.game as unknown as Sub).endText())).toMatch(
-      /^All 2 beacons!★★★✓\u00a0all\u00a02\u00a0beacons · ✓\u00a00:\d\d\u00a0\(par\u00a0\d:\d\d\) · ✓\u00a0hull\u00a03\/3/,
+      /^LEVEL 1 OF 3All 2 beacons!★★★✓\u00a0all\u00a02\u00a0beacons · ✓\u00a00:\d\d\u00a0\(par\u00a0\d:\d\d\) · ✓\u00a0hull\u00a03\/3/,
     );
     expect(g.errors).toEqual([]);
     await g.close();
