@@ -20,7 +20,8 @@
  * shows w in the body frame. The challenge: 10 flips within 20 s (hold a yaw key to spin it up; a tap adds about 0.5 rad/s),
  * stars by the time taken (scene.ts FLIP_STAR_TIMES; none without the player's input).
  * Keys: room: W A S D roll the cube away, left, towards the viewer, right; Q E turn it a quarter about the
- * vertical; pivot: W/S, A/D, Q/E torque about the camera's right, up and viewing axes. X stops the
+ * vertical; pivot: W/S, A/D, Q/E torque about the camera's up, right and viewing axes (free spin: W/S
+ * push ω's tip up/down on screen, A/D left/right, Q/E toward/away; flip: about right, up, view). X stops the
  * spin; Space jump (room); M switches mode (room, cube on a pivot, flip); P pause, N single step, R reset.
  * Click: room: the floor, a push there; the cube, a flick away from the point; pivot: an impulse at the
  * point of the face clicked along the ray. Drag: orbit.
@@ -72,10 +73,12 @@ import { VectorArrow } from '@bitphysics/render-three';
 import {
   BoxGeometry,
   CanvasTexture,
+  CircleGeometry,
   Color,
   CylinderGeometry,
   DoubleSide,
   Float32BufferAttribute,
+  Group,
   Mesh,
   MeshBasicMaterial,
   MeshStandardMaterial,
@@ -895,8 +898,21 @@ function drawSpinTarget(): void {
 }
 
 const lArrow = new VectorArrow({ color: 0xffd166, radius: 0.025, headLength: 0.14 });
-const wArrow = new VectorArrow({ color: 0xff5ce1, radius: 0.02, headLength: 0.12 });
+const wArrow = new VectorArrow({ color: 0xff5ce1, radius: 0.035, headLength: 0.16 });
 app.scene.add(lArrow.object, wArrow.object);
+/**
+ * A dot in a ring at ω's tip, facing the camera and drawn over everything: an arrow pointing at the
+ * camera (or away, behind the cube) shows as next to no shaft, but its tip still shows where it is.
+ */
+const wTip = new Group();
+{
+  const tipMaterial = new MeshBasicMaterial({ color: 0xff5ce1, depthTest: false, transparent: true, side: DoubleSide });
+  wTip.add(new Mesh(new CircleGeometry(0.045, 20), tipMaterial), new Mesh(new RingGeometry(0.1, 0.135, 32), tipMaterial));
+  wTip.renderOrder = 5;
+  for (const m of wTip.children) m.renderOrder = 5;
+  wTip.visible = false;
+  app.scene.add(wTip);
+}
 /**
  * L is drawn this much shorter than w on the same scale (and thicker): where the two are parallel (a
  * cube, always; the box, before it flips) w's magenta tip shows past L's yellow head instead of
@@ -1050,10 +1066,12 @@ const turnButtons = [...dpad.buttons, extras.buttons[0]!, extras.buttons[1]!];
 const TURN_LABELS = {
   room: ['▲', '▼', '◀', '▶', '⟲', '⟳'],
   pivot: ['Pitch ▲', 'Pitch ▼', 'Yaw ◀', 'Yaw ▶', 'Roll ⟲', 'Roll ⟳'],
+  /** Free spin: the buttons push ω's tip on screen (up, down, left, right, toward the camera, away). */
+  spin: ['▲', '▼', '◀', '▶', 'Near', 'Far'],
 };
 /** Labels the turn buttons for the current mode. */
 function labelTurnButtons(): void {
-  const labels = params.mode === 'room' ? TURN_LABELS.room : TURN_LABELS.pivot;
+  const labels = params.mode === 'room' ? TURN_LABELS.room : params.mode === 'cube' ? TURN_LABELS.spin : TURN_LABELS.pivot;
   for (const bar of [dpad.element, extras.element]) bar.classList.toggle('rc-pivot', params.mode !== 'room');
   labels.forEach((label, i) => {
     turnButtons[i]!.textContent = label;
@@ -1200,6 +1218,14 @@ function updateKeyTorque(): void {
   }
   rollAxis.fill(0);
   const T = params.torque * push();
+  if (params.mode === 'cube') {
+    // The free-spin cube's inertia is the same about every axis, so a torque moves ω's tip along it:
+    // D/A push the tip to the screen's right/left (±right), W/S up/down (±up), Q/E toward/away (±back).
+    keyTorque[0] = T * (yaw * right.x - pitch * up.x + roll * back.x);
+    keyTorque[1] = T * (yaw * right.y - pitch * up.y + roll * back.y);
+    keyTorque[2] = T * (yaw * right.z - pitch * up.z + roll * back.z);
+    return;
+  }
   keyTorque[0] = T * (pitch * right.x + yaw * up.x + roll * back.x);
   keyTorque[1] = T * (pitch * right.y + yaw * up.y + roll * back.y);
   keyTorque[2] = T * (pitch * right.z + yaw * up.z + roll * back.z);
@@ -1781,15 +1807,17 @@ function updateStatus(wx: number, wy: number, wz: number): void {
     const off =
       spins.startedAt < 0 ? Math.hypot(wx - spins.targets[0]![0], wy - spins.targets[0]![1], wz - spins.targets[0]![2]) : spins.off;
     const how =
-      spins.held > 0 ? `holding ${spins.held.toFixed(1)} of ${SPIN_HOLD} s ✓` : `off by ${off.toFixed(2)} rad/s (${SPIN_TOLERANCE} counts)`;
+      spins.held > 0
+        ? `holding ${spins.held.toFixed(1)} of ${SPIN_HOLD} s ✓`
+        : `off by ${off.toFixed(2)} rad/s (in the ball: under ${SPIN_TOLERANCE})`;
     status.set({
       goal: touch
         ? `Magenta arrow onto cyan, hold ${SPIN_HOLD} s (${spins.target + 1} of ${SPIN_TARGETS})`
         : `Turn the magenta spin arrow onto the cyan one and hold it ${SPIN_HOLD} s (${spins.target + 1} of ${SPIN_TARGETS})`,
       numbers: `${how}${touch ? '' : ` · spin ${w.toFixed(2)} rad/s`} · ${spins.time(t).toFixed(1)} s`,
       hint: touch
-        ? 'Pitch, Yaw, Roll push the magenta tip their way; ease off before it overshoots'
-        : "W S, A D, Q E push the magenta arrow's tip the way they turn the cube; X stops it; ease off before it overshoots",
+        ? 'Arrows push the magenta tip that way, Near/Far toward you/away; ease off in time'
+        : 'W/S push the magenta tip up/down on screen, A/D left/right, Q/E toward you/away; X stops it; ease off before it overshoots',
     });
   }
 }
@@ -2059,8 +2087,13 @@ function frame(): void {
   else lArrow.hide();
   if (params.showOmega) wArrow.set(o[0], o[1], o[2], wx, wy, wz, omegaScale);
   else wArrow.hide();
-  placeArrowLabel(0, params.showL, o, L[0]!, L[1]!, L[2]!, (L_DRAWN * omegaScale) / iMid);
-  placeArrowLabel(1, params.showOmega, o, wx, wy, wz, omegaScale);
+  wTip.visible = params.mode === 'cube' && params.showOmega && Math.hypot(wx, wy, wz) * omegaScale > 0.02;
+  wTip.position.set(o[0] + wx * omegaScale, o[1] + wy * omegaScale, o[2] + wz * omegaScale);
+  wTip.quaternion.copy(app.camera.quaternion);
+  // The labels are page elements over the canvas: under a round's end card they would cover its words.
+  const card = banner.shown;
+  placeArrowLabel(0, params.showL && !card, o, L[0]!, L[1]!, L[2]!, (L_DRAWN * omegaScale) / iMid);
+  placeArrowLabel(1, params.showOmega && !card, o, wx, wy, wz, omegaScale);
   pivotPost.visible = pivotFoot.visible = params.mode !== 'room';
   if (world.steps !== lastPlotted) {
     lastPlotted = world.steps;
@@ -2296,6 +2329,8 @@ shell.expose({
   },
   /** Angular momentum about the centre of mass, kg m^2/s, world frame. */
   angularMomentum: (): number[] => Array.from(spinAngularMomentum(shell.world, handles.body, new Float64Array(3))),
+  /** The ω arrow: where it starts (the pivot, or the cube's centre in the room; m, world frame) and its length per rad/s (m). */
+  omegaArrow: () => ({ from: Array.from(params.mode === 'room' ? [NaN, NaN, NaN] : handles.pivot), scale: omegaScale }),
   /** The body's y axis in the world frame (a unit vector): flips sign in flip mode. */
   bodyUp: (): number[] => {
     const q = shell.world.components.Orientation,
