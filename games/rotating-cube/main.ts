@@ -534,7 +534,9 @@ shell.onWorldChange(() => {
 });
 
 // The room's pads (drawn only; the physics knows nothing of them): the lit one a glowing square, the
-// ones to come outlined, the ones reached a dim gold; a ring bursts from a pad when it is reached.
+// ones to come outlined, the ones reached a dim grey tick; a ring bursts from a pad when it is reached.
+/** The tint of a finished pad's tick while the round runs (sRGB hex): a grey, no face's colour. */
+const PAD_DONE_GREY = 0x9aa3b2;
 /**
  * A pad's picture, white on clear (a material's colour tints it): a rounded square, filled or a frame,
  * with a soft edge PAD_TEX_MARGIN px wide inside a PAD_TEX px texture. Drawn in a texture (filtered and
@@ -561,6 +563,33 @@ function padTexture(filled: boolean): CanvasTexture {
     g.lineWidth = 16;
     g.stroke();
   }
+  const texture = new CanvasTexture(c);
+  texture.colorSpace = SRGBColorSpace;
+  texture.anisotropy = 4;
+  return texture;
+}
+/**
+ * A finished pad's mark: a faint square with a tick in its middle (white, tinted by the material), so
+ * a pad already reached reads as done, not as another coloured target.
+ */
+function padTickTexture(): CanvasTexture {
+  const c = document.createElement('canvas');
+  c.width = c.height = PAD_TEX;
+  const g = c.getContext('2d')!;
+  const m = PAD_TEX_MARGIN,
+    size = PAD_TEX - 2 * m;
+  g.fillStyle = 'rgba(255, 255, 255, 0.18)';
+  g.beginPath();
+  g.roundRect(m, m, size, size, 20);
+  g.fill();
+  g.strokeStyle = '#fff';
+  g.lineWidth = size * 0.1;
+  g.lineCap = g.lineJoin = 'round';
+  g.beginPath();
+  g.moveTo(m + size * 0.28, m + size * 0.52);
+  g.lineTo(m + size * 0.44, m + size * 0.68);
+  g.lineTo(m + size * 0.74, m + size * 0.34);
+  g.stroke();
   const texture = new CanvasTexture(c);
   texture.colorSpace = SRGBColorSpace;
   texture.anisotropy = 4;
@@ -638,7 +667,14 @@ const footprintThrough = new Mesh(
 footprint.renderOrder = 2;
 footprintThrough.renderOrder = 3;
 app.scene.add(footprint, footprintThrough);
-const padDoneMaterial = new MeshBasicMaterial({ color: 0xc9a43a, map: padFill, transparent: true, opacity: 0.55, depthWrite: false });
+/** Finished pads: a dim grey tick while the round runs (no colour a target could have), all gold once it is won. */
+const padDoneMaterial = new MeshBasicMaterial({
+  color: PAD_DONE_GREY,
+  map: padTickTexture(),
+  transparent: true,
+  opacity: 0.55,
+  depthWrite: false,
+});
 const padMarks = Array.from({ length: PAD_COUNT }, () => {
   const outline = new Mesh(
     padPlane,
@@ -867,7 +903,7 @@ function celebrate(): void {
     sound.chime(PAD_PITCHES[r.pad] ?? 880, last ? 0.3 : 0.35);
     if (last) window.setTimeout(() => sound.chime(1568, 0.8), 180);
     const perfect = r.miss <= PERFECT ? ' · Perfect!' : '';
-    const inPar = r.moves <= r.par ? ' · in par!' : ` · ${r.moves} moves, par ${r.par}`;
+    const inPar = r.moves <= r.par ? ' · on par!' : ` · ${r.moves} moves, par ${r.par}`;
     showPop(
       last
         ? `All ${layout.pads.length} pads! ${pads.moves} moves ${stars(padStars(pads.moves, pads.par))}`
@@ -1330,7 +1366,7 @@ const aim: Push = { kind: 'floor', dx: 0, dz: 0, speed: 0, x: 0, z: 0 };
 let lastPush: Push | null = null;
 const origin = new Float64Array(3),
   span = new Float64Array(3);
-/** Why the last `aimAt` gave no push: '' (it gave one), 'here' (the cell is the cube's own), 'bed' (a slide there stops where the cube is already, at the tiles' edge). */
+/** Why the last `aimAt` gave no push: '' (it gave one), 'here' (the cell is the cube's own), 'bed' (the cell is in the lit pad's bed of ROLL tiles, where no slide stops). */
 let aimWhy: '' | 'here' | 'bed' = '';
 /** The cell under the pointer of the last `aimAt` (its centre, x and z, m), drawn outlined while the mouse hovers. */
 const hoverCell: [number, number] = [0, 0];
@@ -1366,11 +1402,10 @@ function rayHitsCube(ndcX: number, ndcY: number): boolean {
 /**
  * Room mode: what a click at (ndcX, ndcY) would do, into `aim`: a push towards the centre of the
  * floor cell under the pointer (`cellAt` of where the ray meets the floor, whatever it passes
- * through first, the cube included: the cell drawn under the pointer is the one aimed at), or, in
- * the lit pad's bed of tiles, the nearest cell at its edge (`snapToBed`), at `slideSpeed` of the
- * distance, so the cube sliding on a face stops on that cell.
+ * through first, the cube included: the cell drawn under the pointer is the one aimed at), at
+ * `slideSpeed` of the distance, so the cube sliding on a face stops on that cell.
  * @returns `aim`, or null when the click would do nothing (not the room, the ray misses the floor,
- * or the cube already rests where the slide would stop: `aimWhy` says which).
+ * the cell is in the lit pad's bed of tiles (`snapToBed`), or the cube already rests there: `aimWhy` says which).
  */
 function aimAt(ndcX: number, ndcY: number): Push | null {
   aimWhy = '';
@@ -1385,10 +1420,17 @@ function aimAt(ndcX: number, ndcY: number): Push | null {
   const [hx, hz] = cellAt(level[0], level[1]);
   hoverCell[0] = hx;
   hoverCell[1] = hz;
+  // A cell in the lit pad's bed of ROLL tiles (the pad too) is one no slide stops on: the cube stays,
+  // and the pop says to roll onto it (a slide to the bed's nearest edge cell went wherever that was,
+  // often away from the cell clicked).
   const [x, z] = snapToBed(hx, hz);
+  if (x !== hx || z !== hz) {
+    aimWhy = 'bed';
+    return null;
+  }
   const dist = Math.hypot(x - cx, z - cz);
   if (!(dist > 0.05)) {
-    aimWhy = x !== hx || z !== hz ? 'bed' : 'here';
+    aimWhy = 'here';
     return null;
   }
   Object.assign(aim, { kind: 'floor', dx: (x - cx) / dist, dz: (z - cz) / dist, speed: slideSpeed(dist), x, z });
@@ -1399,7 +1441,7 @@ function aimAt(ndcX: number, ndcY: number): Push | null {
 function sayWhyNot(): void {
   const roll = pageLayout().touch() ? '▲◀▼▶' : 'W A S D';
   if (aimWhy === 'here') showPop(`The cube is on that cell: pick another, or roll it (${roll})`, 1600, '#bfe9ff');
-  else if (aimWhy === 'bed') showPop(`Slides stop at the ROLL tiles: roll across them (${roll})`, 1800, '#bfe9ff');
+  else if (aimWhy === 'bed') showPop(`A slide can't reach that cell: roll onto it (${roll})`, 1800, '#bfe9ff');
 }
 
 /**
@@ -2208,8 +2250,8 @@ function frame(): void {
     mark.done.visible = room && i < pads.pad;
   });
   // The round won: every pad, the last one too, glows gold (pulsing) until the next round; while it
-  // runs the pads reached are a dim gold, so the lit pad stands out.
-  padDoneMaterial.color.setHex(pads.done ? 0xffd34d : 0xc9a43a);
+  // runs the pads reached are a dim grey tick, so the lit pad (and a yellow one) stands out.
+  padDoneMaterial.color.setHex(pads.done ? 0xffd34d : PAD_DONE_GREY);
   padDoneMaterial.opacity = pads.done ? 0.75 + 0.25 * Math.sin(now / 220) : 0.55;
   if (frames % 5 === 0) markChips();
   celebrate();
