@@ -1,14 +1,15 @@
 /**
  * The rotating cube's controls legend (and the phone's touch card) for each mode, in a player's
  * words: in the room the keys roll the cube over an edge (W A S D) and turn it a quarter turn flat
- * on the floor (Q E); on the pivot they push its spin about the screen's axes. The page swaps the
+ * on the floor (Q E); on the free-spin pivot they push the spin arrow's tip the way they say on
+ * screen; with the flipping box they torque it about the screen's axes. The page swaps the
  * legend when the mode changes (main.ts `setMode`).
  */
 import type { ControlHint } from '@bitphysics/game-kit';
 import type { Mode } from './scene';
 
 /**
- * The legend lines of `mode` ('room', 'cube' or 'flip'; the two pivot modes share theirs), before
+ * The legend lines of `mode` ('room', 'cube' or 'flip'), before
  * the camera's orbit lines. `touch`: whether the page runs on a touch screen, where a drag across
  * the cube flicks it (a plain tap there picks the floor cell under the finger, as elsewhere).
  */
@@ -18,14 +19,24 @@ export function cubeControls(mode: Mode, touch: boolean): ControlHint[] {
     room
       ? touch
         ? { keys: 'Tap', action: 'a floor cell: slide the cube onto it; drag across the cube: flick it', touch: 'Tap' }
-        : { keys: 'Click', action: "a floor cell: slide the cube onto it (a pad's tiles: to their edge)", touch: 'Tap' }
+        : { keys: 'Click', action: "a floor cell: slide the cube onto it (not into a pad's ROLL tiles: roll there)", touch: 'Tap' }
       : { keys: 'Click', action: 'a face: knock it there', touch: 'Tap' },
     room
       ? { keys: 'W A S D', action: 'roll the cube over an edge: away, left, toward you, right', touch: '▲ ◀ ▼ ▶' }
-      : { keys: 'W S, A D', action: 'spin it: tip it away or toward you (W S), turn it left or right (A D)', touch: 'Pitch ▲▼ Yaw ◀▶' },
+      : mode === 'cube'
+        ? {
+            keys: 'W S, A D',
+            action: touch
+              ? "push the spin arrow's tip that way on screen"
+              : "push the spin arrow's tip up or down (W S), left or right (A D) on screen",
+            touch: '▲▼ ◀▶',
+          }
+        : { keys: 'W S, A D', action: 'spin it: tip it away or toward you (W S), turn it left or right (A D)', touch: 'Pitch ▲▼ Yaw ◀▶' },
     room
       ? { keys: 'Q E', action: 'turn it a quarter turn flat on the floor, left or right', touch: '⟲ ⟳' }
-      : { keys: 'Q E', action: 'spin it like a wheel facing you, left or right', touch: 'Roll ⟲ ⟳' },
+      : mode === 'cube'
+        ? { keys: 'Q E', action: "push the spin arrow's tip toward you or away", touch: 'Near Far' }
+        : { keys: 'Q E', action: 'spin it like a wheel facing you, left or right', touch: 'Roll ⟲ ⟳' },
     { keys: 'X', action: 'stop spinning', touch: 'Stop' },
     ...(room ? [{ keys: 'Space', action: 'jump', touch: 'Jump', card: false }] : []),
     { keys: 'M', action: 'mode: pads / spin the cube / flipping box', touch: 'Mode' },

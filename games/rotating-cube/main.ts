@@ -20,7 +20,8 @@
  * shows w in the body frame. The challenge: 10 flips within 20 s (hold a yaw key to spin it up; a tap adds about 0.5 rad/s),
  * stars by the time taken (scene.ts FLIP_STAR_TIMES; none without the player's input).
  * Keys: room: W A S D roll the cube away, left, towards the viewer, right; Q E turn it a quarter about the
- * vertical; pivot: W/S, A/D, Q/E torque about the camera's right, up and viewing axes. X stops the
+ * vertical; pivot: W/S, A/D, Q/E torque about the camera's up, right and viewing axes (free spin: W/S
+ * push ω's tip up/down on screen, A/D left/right, Q/E toward/away; flip: about right, up, view). X stops the
  * spin; Space jump (room); M switches mode (room, cube on a pivot, flip); P pause, N single step, R reset.
  * Click: room: the floor, a push there; the cube, a flick away from the point; pivot: an impulse at the
  * point of the face clicked along the ray. Drag: orbit.
@@ -72,10 +73,12 @@ import { VectorArrow } from '@bitphysics/render-three';
 import {
   BoxGeometry,
   CanvasTexture,
+  CircleGeometry,
   Color,
   CylinderGeometry,
   DoubleSide,
   Float32BufferAttribute,
+  Group,
   Mesh,
   MeshBasicMaterial,
   MeshStandardMaterial,
@@ -178,7 +181,9 @@ const spinsReached: number[] = [];
 /** Best round of this page visit: fewest moves in a pad round, fastest free-spin round (s), and most flips. */
 let bestSpinTime = Infinity;
 let bestMoves = Infinity,
-  bestFlips = 0;
+  bestFlips = 0,
+  /** The fastest FLIP_GOAL flips of this visit, s (Infinity: none yet). */
+  bestFlipTime = Infinity;
 /** Arrow length per rad/s of angular velocity, m: set per world so the starting spin shows as ARROW_LENGTH. */
 let omegaScale = 1;
 /**
@@ -299,6 +304,8 @@ function createWorld(): PhysicsWorld {
   pads.reset(layout);
   toGo.reset();
   toGoPad = -1;
+  // A won flip round's time joins the visit's best as the next round starts (its banner compared against the best before it).
+  if (flips.wonAt >= 0) bestFlipTime = Math.min(bestFlipTime, flips.time(flips.wonAt));
   flips.reset();
   spins.reset(spinTargets(...cameraAxes()));
   spinsReached.length = 0;
@@ -527,7 +534,9 @@ shell.onWorldChange(() => {
 });
 
 // The room's pads (drawn only; the physics knows nothing of them): the lit one a glowing square, the
-// ones to come outlined, the ones reached a dim gold; a ring bursts from a pad when it is reached.
+// ones to come outlined, the ones reached a dim grey tick; a ring bursts from a pad when it is reached.
+/** The tint of a finished pad's tick while the round runs (sRGB hex): a grey, no face's colour. */
+const PAD_DONE_GREY = 0x9aa3b2;
 /**
  * A pad's picture, white on clear (a material's colour tints it): a rounded square, filled or a frame,
  * with a soft edge PAD_TEX_MARGIN px wide inside a PAD_TEX px texture. Drawn in a texture (filtered and
@@ -554,6 +563,33 @@ function padTexture(filled: boolean): CanvasTexture {
     g.lineWidth = 16;
     g.stroke();
   }
+  const texture = new CanvasTexture(c);
+  texture.colorSpace = SRGBColorSpace;
+  texture.anisotropy = 4;
+  return texture;
+}
+/**
+ * A finished pad's mark: a faint square with a tick in its middle (white, tinted by the material), so
+ * a pad already reached reads as done, not as another coloured target.
+ */
+function padTickTexture(): CanvasTexture {
+  const c = document.createElement('canvas');
+  c.width = c.height = PAD_TEX;
+  const g = c.getContext('2d')!;
+  const m = PAD_TEX_MARGIN,
+    size = PAD_TEX - 2 * m;
+  g.fillStyle = 'rgba(255, 255, 255, 0.18)';
+  g.beginPath();
+  g.roundRect(m, m, size, size, 20);
+  g.fill();
+  g.strokeStyle = '#fff';
+  g.lineWidth = size * 0.1;
+  g.lineCap = g.lineJoin = 'round';
+  g.beginPath();
+  g.moveTo(m + size * 0.28, m + size * 0.52);
+  g.lineTo(m + size * 0.44, m + size * 0.68);
+  g.lineTo(m + size * 0.74, m + size * 0.34);
+  g.stroke();
   const texture = new CanvasTexture(c);
   texture.colorSpace = SRGBColorSpace;
   texture.anisotropy = 4;
@@ -631,7 +667,14 @@ const footprintThrough = new Mesh(
 footprint.renderOrder = 2;
 footprintThrough.renderOrder = 3;
 app.scene.add(footprint, footprintThrough);
-const padDoneMaterial = new MeshBasicMaterial({ color: 0xc9a43a, map: padFill, transparent: true, opacity: 0.55, depthWrite: false });
+/** Finished pads: a dim grey tick while the round runs (no colour a target could have), all gold once it is won. */
+const padDoneMaterial = new MeshBasicMaterial({
+  color: PAD_DONE_GREY,
+  map: padTickTexture(),
+  transparent: true,
+  opacity: 0.55,
+  depthWrite: false,
+});
 const padMarks = Array.from({ length: PAD_COUNT }, () => {
   const outline = new Mesh(
     padPlane,
@@ -860,7 +903,7 @@ function celebrate(): void {
     sound.chime(PAD_PITCHES[r.pad] ?? 880, last ? 0.3 : 0.35);
     if (last) window.setTimeout(() => sound.chime(1568, 0.8), 180);
     const perfect = r.miss <= PERFECT ? ' · Perfect!' : '';
-    const inPar = r.moves <= r.par ? ' · in par!' : ` · ${r.moves} moves, par ${r.par}`;
+    const inPar = r.moves <= r.par ? ' · on par!' : ` · ${r.moves} moves, par ${r.par}`;
     showPop(
       last
         ? `All ${layout.pads.length} pads! ${pads.moves} moves ${stars(padStars(pads.moves, pads.par))}`
@@ -895,8 +938,21 @@ function drawSpinTarget(): void {
 }
 
 const lArrow = new VectorArrow({ color: 0xffd166, radius: 0.025, headLength: 0.14 });
-const wArrow = new VectorArrow({ color: 0xff5ce1, radius: 0.02, headLength: 0.12 });
+const wArrow = new VectorArrow({ color: 0xff5ce1, radius: 0.035, headLength: 0.16 });
 app.scene.add(lArrow.object, wArrow.object);
+/**
+ * A dot in a ring at ω's tip, facing the camera and drawn over everything: an arrow pointing at the
+ * camera (or away, behind the cube) shows as next to no shaft, but its tip still shows where it is.
+ */
+const wTip = new Group();
+{
+  const tipMaterial = new MeshBasicMaterial({ color: 0xff5ce1, depthTest: false, transparent: true, side: DoubleSide });
+  wTip.add(new Mesh(new CircleGeometry(0.045, 20), tipMaterial), new Mesh(new RingGeometry(0.1, 0.135, 32), tipMaterial));
+  wTip.renderOrder = 5;
+  for (const m of wTip.children) m.renderOrder = 5;
+  wTip.visible = false;
+  app.scene.add(wTip);
+}
 /**
  * L is drawn this much shorter than w on the same scale (and thicker): where the two are parallel (a
  * cube, always; the box, before it flips) w's magenta tip shows past L's yellow head instead of
@@ -1050,10 +1106,12 @@ const turnButtons = [...dpad.buttons, extras.buttons[0]!, extras.buttons[1]!];
 const TURN_LABELS = {
   room: ['▲', '▼', '◀', '▶', '⟲', '⟳'],
   pivot: ['Pitch ▲', 'Pitch ▼', 'Yaw ◀', 'Yaw ▶', 'Roll ⟲', 'Roll ⟳'],
+  /** Free spin: the buttons push ω's tip on screen (up, down, left, right, toward the camera, away). */
+  spin: ['▲', '▼', '◀', '▶', 'Near', 'Far'],
 };
 /** Labels the turn buttons for the current mode. */
 function labelTurnButtons(): void {
-  const labels = params.mode === 'room' ? TURN_LABELS.room : TURN_LABELS.pivot;
+  const labels = params.mode === 'room' ? TURN_LABELS.room : params.mode === 'cube' ? TURN_LABELS.spin : TURN_LABELS.pivot;
   for (const bar of [dpad.element, extras.element]) bar.classList.toggle('rc-pivot', params.mode !== 'room');
   labels.forEach((label, i) => {
     turnButtons[i]!.textContent = label;
@@ -1200,6 +1258,14 @@ function updateKeyTorque(): void {
   }
   rollAxis.fill(0);
   const T = params.torque * push();
+  if (params.mode === 'cube') {
+    // The free-spin cube's inertia is the same about every axis, so a torque moves ω's tip along it:
+    // D/A push the tip to the screen's right/left (±right), W/S up/down (±up), Q/E toward/away (±back).
+    keyTorque[0] = T * (yaw * right.x - pitch * up.x + roll * back.x);
+    keyTorque[1] = T * (yaw * right.y - pitch * up.y + roll * back.y);
+    keyTorque[2] = T * (yaw * right.z - pitch * up.z + roll * back.z);
+    return;
+  }
   keyTorque[0] = T * (pitch * right.x + yaw * up.x + roll * back.x);
   keyTorque[1] = T * (pitch * right.y + yaw * up.y + roll * back.y);
   keyTorque[2] = T * (pitch * right.z + yaw * up.z + roll * back.z);
@@ -1300,7 +1366,7 @@ const aim: Push = { kind: 'floor', dx: 0, dz: 0, speed: 0, x: 0, z: 0 };
 let lastPush: Push | null = null;
 const origin = new Float64Array(3),
   span = new Float64Array(3);
-/** Why the last `aimAt` gave no push: '' (it gave one), 'here' (the cell is the cube's own), 'bed' (a slide there stops where the cube is already, at the tiles' edge). */
+/** Why the last `aimAt` gave no push: '' (it gave one), 'here' (the cell is the cube's own), 'bed' (the cell is in the lit pad's bed of ROLL tiles, where no slide stops). */
 let aimWhy: '' | 'here' | 'bed' = '';
 /** The cell under the pointer of the last `aimAt` (its centre, x and z, m), drawn outlined while the mouse hovers. */
 const hoverCell: [number, number] = [0, 0];
@@ -1336,11 +1402,10 @@ function rayHitsCube(ndcX: number, ndcY: number): boolean {
 /**
  * Room mode: what a click at (ndcX, ndcY) would do, into `aim`: a push towards the centre of the
  * floor cell under the pointer (`cellAt` of where the ray meets the floor, whatever it passes
- * through first, the cube included: the cell drawn under the pointer is the one aimed at), or, in
- * the lit pad's bed of tiles, the nearest cell at its edge (`snapToBed`), at `slideSpeed` of the
- * distance, so the cube sliding on a face stops on that cell.
+ * through first, the cube included: the cell drawn under the pointer is the one aimed at), at
+ * `slideSpeed` of the distance, so the cube sliding on a face stops on that cell.
  * @returns `aim`, or null when the click would do nothing (not the room, the ray misses the floor,
- * or the cube already rests where the slide would stop: `aimWhy` says which).
+ * the cell is in the lit pad's bed of tiles (`snapToBed`), or the cube already rests there: `aimWhy` says which).
  */
 function aimAt(ndcX: number, ndcY: number): Push | null {
   aimWhy = '';
@@ -1355,10 +1420,17 @@ function aimAt(ndcX: number, ndcY: number): Push | null {
   const [hx, hz] = cellAt(level[0], level[1]);
   hoverCell[0] = hx;
   hoverCell[1] = hz;
+  // A cell in the lit pad's bed of ROLL tiles (the pad too) is one no slide stops on: the cube stays,
+  // and the pop says to roll onto it (a slide to the bed's nearest edge cell went wherever that was,
+  // often away from the cell clicked).
   const [x, z] = snapToBed(hx, hz);
+  if (x !== hx || z !== hz) {
+    aimWhy = 'bed';
+    return null;
+  }
   const dist = Math.hypot(x - cx, z - cz);
   if (!(dist > 0.05)) {
-    aimWhy = x !== hx || z !== hz ? 'bed' : 'here';
+    aimWhy = 'here';
     return null;
   }
   Object.assign(aim, { kind: 'floor', dx: (x - cx) / dist, dz: (z - cz) / dist, speed: slideSpeed(dist), x, z });
@@ -1369,7 +1441,7 @@ function aimAt(ndcX: number, ndcY: number): Push | null {
 function sayWhyNot(): void {
   const roll = pageLayout().touch() ? '▲◀▼▶' : 'W A S D';
   if (aimWhy === 'here') showPop(`The cube is on that cell: pick another, or roll it (${roll})`, 1600, '#bfe9ff');
-  else if (aimWhy === 'bed') showPop(`Slides stop at the ROLL tiles: roll across them (${roll})`, 1800, '#bfe9ff');
+  else if (aimWhy === 'bed') showPop(`A slide can't reach that cell: roll onto it (${roll})`, 1800, '#bfe9ff');
 }
 
 /**
@@ -1602,7 +1674,10 @@ function nextRound(): void {
 /** Shows the banner once the mode's round is over (round-end.ts) and BANNER_DELAY_MS has passed; hides it otherwise. */
 function updateBanner(): void {
   const now = performance.now();
-  const end = roundEnd(params.mode, { pads, spins, flips }, shell.world, bestMoves);
+  const end = roundEnd(params.mode, { pads, spins, flips }, shell.world, bestMoves, {
+    kick: touch ? 'the Pitch ▲ ▼ buttons' : 'W or S',
+    bestFlipTime,
+  });
   if (!end) {
     overSeenAt = -1;
     banner.hide();
@@ -1735,6 +1810,8 @@ function updateStatus(wx: number, wy: number, wz: number): void {
     const n = flips.counter.count;
     const over = flips.over(world);
     if (over && n > bestFlips) bestFlips = n;
+    // The banner shows the best time before this round's (roundEnd takes the lower of the two), so it is kept here once the banner is up.
+    const wonIn = flips.wonAt >= 0 ? flips.time(t) : Infinity;
     const [lo, hi] = FLIP_BAND;
     const inBand = spin >= lo && spin <= hi;
     const band =
@@ -1742,7 +1819,7 @@ function updateStatus(wx: number, wy: number, wz: number): void {
         ? `too slow: hold ${touch ? 'Yaw ▶' : 'D'} to spin it up`
         : spin > hi
           ? `too fast: hold ${touch ? 'Yaw ◀' : 'A'} to brake`
-          : `in the band ✓ · a kick (${touch ? 'Pitch' : 'W or S'}) makes it flip sooner`;
+          : `in the band ✓ · a kick (${touch ? 'Pitch ▲ ▼' : 'W or S'}) makes it flip sooner`;
     status.set(
       over
         ? {
@@ -1750,7 +1827,7 @@ function updateStatus(wx: number, wy: number, wz: number): void {
               flips.wonAt >= 0
                 ? `${FLIP_GOAL} flips in ${flips.time(t).toFixed(1)} s ${stars(flips.stars())}`
                 : `Time! ${n} flips ${stars(flips.stars())}`,
-            numbers: `best ${bestFlips} flips · ★★★ within ${FLIP_STAR_TIMES[0]} s, ★★ ${FLIP_STAR_TIMES[1]} s`,
+            numbers: `best ${Number.isFinite(Math.min(bestFlipTime, wonIn)) ? `${Math.min(bestFlipTime, wonIn).toFixed(1)} s` : `${bestFlips} flips`} · ★★★ within ${FLIP_STAR_TIMES[0]} s, ★★ ${FLIP_STAR_TIMES[1]} s`,
             hint: touch ? 'Next: back to the pads · ↻: try again' : 'Enter: back to the pads · R: try again',
           }
         : {
@@ -1781,15 +1858,17 @@ function updateStatus(wx: number, wy: number, wz: number): void {
     const off =
       spins.startedAt < 0 ? Math.hypot(wx - spins.targets[0]![0], wy - spins.targets[0]![1], wz - spins.targets[0]![2]) : spins.off;
     const how =
-      spins.held > 0 ? `holding ${spins.held.toFixed(1)} of ${SPIN_HOLD} s ✓` : `off by ${off.toFixed(2)} rad/s (${SPIN_TOLERANCE} counts)`;
+      spins.held > 0
+        ? `holding ${spins.held.toFixed(1)} of ${SPIN_HOLD} s ✓`
+        : `off by ${off.toFixed(2)} rad/s (in the ball: under ${SPIN_TOLERANCE})`;
     status.set({
       goal: touch
         ? `Magenta arrow onto cyan, hold ${SPIN_HOLD} s (${spins.target + 1} of ${SPIN_TARGETS})`
         : `Turn the magenta spin arrow onto the cyan one and hold it ${SPIN_HOLD} s (${spins.target + 1} of ${SPIN_TARGETS})`,
       numbers: `${how}${touch ? '' : ` · spin ${w.toFixed(2)} rad/s`} · ${spins.time(t).toFixed(1)} s`,
       hint: touch
-        ? 'Pitch, Yaw, Roll push the magenta tip their way; ease off before it overshoots'
-        : "W S, A D, Q E push the magenta arrow's tip the way they turn the cube; X stops it; ease off before it overshoots",
+        ? 'Arrows push the magenta tip that way, Near/Far toward you/away; ease off in time'
+        : 'W/S push the magenta tip up/down on screen, A/D left/right, Q/E toward you/away; X stops it; ease off before it overshoots',
     });
   }
 }
@@ -2059,8 +2138,13 @@ function frame(): void {
   else lArrow.hide();
   if (params.showOmega) wArrow.set(o[0], o[1], o[2], wx, wy, wz, omegaScale);
   else wArrow.hide();
-  placeArrowLabel(0, params.showL, o, L[0]!, L[1]!, L[2]!, (L_DRAWN * omegaScale) / iMid);
-  placeArrowLabel(1, params.showOmega, o, wx, wy, wz, omegaScale);
+  wTip.visible = params.mode === 'cube' && params.showOmega && Math.hypot(wx, wy, wz) * omegaScale > 0.02;
+  wTip.position.set(o[0] + wx * omegaScale, o[1] + wy * omegaScale, o[2] + wz * omegaScale);
+  wTip.quaternion.copy(app.camera.quaternion);
+  // The labels are page elements over the canvas: under a round's end card they would cover its words.
+  const card = banner.shown;
+  placeArrowLabel(0, params.showL && !card, o, L[0]!, L[1]!, L[2]!, (L_DRAWN * omegaScale) / iMid);
+  placeArrowLabel(1, params.showOmega && !card, o, wx, wy, wz, omegaScale);
   pivotPost.visible = pivotFoot.visible = params.mode !== 'room';
   if (world.steps !== lastPlotted) {
     lastPlotted = world.steps;
@@ -2166,8 +2250,8 @@ function frame(): void {
     mark.done.visible = room && i < pads.pad;
   });
   // The round won: every pad, the last one too, glows gold (pulsing) until the next round; while it
-  // runs the pads reached are a dim gold, so the lit pad stands out.
-  padDoneMaterial.color.setHex(pads.done ? 0xffd34d : 0xc9a43a);
+  // runs the pads reached are a dim grey tick, so the lit pad (and a yellow one) stands out.
+  padDoneMaterial.color.setHex(pads.done ? 0xffd34d : PAD_DONE_GREY);
   padDoneMaterial.opacity = pads.done ? 0.75 + 0.25 * Math.sin(now / 220) : 0.55;
   if (frames % 5 === 0) markChips();
   celebrate();
@@ -2296,6 +2380,8 @@ shell.expose({
   },
   /** Angular momentum about the centre of mass, kg m^2/s, world frame. */
   angularMomentum: (): number[] => Array.from(spinAngularMomentum(shell.world, handles.body, new Float64Array(3))),
+  /** The ω arrow: where it starts (the pivot, or the cube's centre in the room; m, world frame) and its length per rad/s (m). */
+  omegaArrow: () => ({ from: Array.from(params.mode === 'room' ? [NaN, NaN, NaN] : handles.pivot), scale: omegaScale }),
   /** The body's y axis in the world frame (a unit vector): flips sign in flip mode. */
   bodyUp: (): number[] => {
     const q = shell.world.components.Orientation,

@@ -37,11 +37,26 @@ export interface Rounds {
   flips: FlipChallenge;
 }
 
+/** The words the flip round's end card needs from the page. */
+export interface FlipEndWords {
+  /** What kicks the box, as the player sees it ('W or S'; on a phone 'the Pitch ▲ ▼ buttons'). */
+  kick?: string;
+  /** The fastest FLIP_GOAL flips of this visit before this round, s (Infinity: none). */
+  bestFlipTime?: number;
+}
+
 /**
  * What the banner says at the end of the round of `mode` in `world`, or null while the round runs.
- * `bestMoves`: the fewest moves of a pad round this visit before this one (Infinity: none).
+ * `bestMoves`: the fewest moves of a pad round this visit before this one (Infinity: none);
+ * `flipWords`: the flip round's kick keys and best time (FlipEndWords).
  */
-export function roundEnd(mode: Mode, rounds: Rounds, world: PhysicsWorld, bestMoves = Infinity): RoundEndContent | null {
+export function roundEnd(
+  mode: Mode,
+  rounds: Rounds,
+  world: PhysicsWorld,
+  bestMoves = Infinity,
+  flipWords: FlipEndWords = {},
+): RoundEndContent | null {
   const { pads, spins, flips } = rounds;
   if (mode === 'room') {
     if (!pads.done) return null;
@@ -68,14 +83,17 @@ export function roundEnd(mode: Mode, rounds: Rounds, world: PhysicsWorld, bestMo
   }
   if (!flips.over(world)) return null;
   const won = flips.wonAt >= 0;
+  const kick = flipWords.kick ?? 'W or S';
+  const best = Math.min(flipWords.bestFlipTime ?? Infinity, won ? flips.time(world.time) : Infinity);
+  const bestText = Number.isFinite(best) ? `best ${best.toFixed(1)} s · ` : '';
   return {
     title: won ? `${FLIP_GOAL} flips!` : 'Time!',
     big: won
       ? `${starText(flips.stars())} ${flips.time(world.time).toFixed(1)} s`
       : `${starText(flips.stars())} ${flips.counter.count} flips`,
     detail: won
-      ? `★★★ within ${FLIP_STAR_TIMES[0]} s, ★★ ${FLIP_STAR_TIMES[1]} s: a kick (W or S) makes it flip sooner`
-      : `flips count only while the spin stays ${FLIP_BAND[0]} to ${FLIP_BAND[1]} rad/s`,
+      ? `${bestText}★★★ within ${FLIP_STAR_TIMES[0]} s, ★★ ${FLIP_STAR_TIMES[1]} s: a kick (${kick}) makes it flip sooner`
+      : `${bestText}flips count only while the spin stays ${FLIP_BAND[0]} to ${FLIP_BAND[1]} rad/s`,
     next: 'Back to the pads',
     retry: 'Try again',
     won,

@@ -20,8 +20,8 @@ export const SPIN_STAR_TIMES: readonly [number, number] = Object.freeze([25, 50]
 
 /**
  * The round's targets, rad/s, world frame, from the camera's right and up (unit vectors, world frame,
- * so the keys' torque axes line up with them): SPIN_RATE about up (the yaw keys alone), about right
- * (the pitch keys alone), then about the line half way between up and -right (both at once).
+ * so the keys' torque axes line up with them): SPIN_RATE about up (W alone), about right (D alone),
+ * then about the line half way between up and -right (W and A at once).
  * @throws RangeError if `right` or `up` is not 3 finite numbers of length near 1.
  */
 export function spinTargets(right: ArrayLike<number>, up: ArrayLike<number>): [number, number, number][] {

@@ -531,10 +531,11 @@ describe('phone controls', () => {
     await g.close();
   });
 
-  it('rotating cube: holding Yaw ▶ spins the cube', async () => {
+  it('rotating cube: holding ▶ on the free-spin pivot pushes ω towards the screen right', async () => {
     const g = await h.openGame('rotating-cube', { ...PHONE, query: { mode: 'cube' } });
-    // On the pivot the turn buttons name the torques.
-    expect(await g.page.getByRole('button', { name: 'turn right', exact: true }).textContent()).toBe('Yaw ▶');
+    // On the free-spin pivot the turn buttons say where they push ω's tip on screen.
+    expect(await g.page.getByRole('button', { name: 'turn right', exact: true }).textContent()).toBe('▶');
+    expect(await g.page.getByRole('button', { name: 'spin left', exact: true }).textContent()).toBe('Near');
     await hold(g.page, 'stop spinning', 100);
     await g.waitFor(() => Math.hypot(...(window.game as unknown as { angularVelocity(): number[] }).angularVelocity()) === 0, null);
     // Held until the cube turns (a loaded machine may draw few frames in a fixed half second).
@@ -548,6 +549,13 @@ describe('phone controls', () => {
     });
     const w = await g.page.evaluate(() => (window.game as unknown as { angularVelocity(): number[] }).angularVelocity());
     expect(Math.hypot(...w)).toBeGreaterThan(0.05);
+    // ω along the camera's right axis (the first column of its world matrix), within 15 degrees.
+    const right = await g.page.evaluate(() => {
+      const e = (window.game as unknown as { app: { camera: { matrixWorld: { elements: number[] } } } }).app.camera.matrixWorld.elements;
+      return [e[0]!, e[1]!, e[2]!];
+    });
+    const along = (w[0]! * right[0]! + w[1]! * right[1]! + w[2]! * right[2]!) / (Math.hypot(...w) * Math.hypot(...right));
+    expect(along).toBeGreaterThan(0.966);
     expect(g.errors).toEqual([]);
     await g.close();
   });

@@ -1028,6 +1028,49 @@ describe('3D rigid-body games in headless Chromium', () => {
     await g.close();
   }, 240_000);
 
+  it('rotating-cube (room), 1280 x 800: a click on a pad ringed by ROLL tiles, or on a tile, leaves the cube where it is and says to roll onto it', async () => {
+    type Game = { challenge(): { pad: number; moves: number; face: number }; pop(): { text: string; count: number } };
+    const g = await h.openGame('rotating-cube', { query: { seed: 11 }, viewport: { width: 1280, height: 800 }, readyTimeoutMs: 60_000 });
+    await waitCubeAtRest(g);
+    const s0 = await cubeState(g);
+    const pads = s0.pads as [number, number][];
+    // Pads 1 and 2 taken by hand (beside the pad with another face up, then on it with the face it wants: a roll on).
+    const faces = await g.page.evaluate(() => (window.game as unknown as { challenge(): { faces: number[] } }).challenge().faces);
+    for (let k = 0; k < 2; k++) {
+      const want = faces[k]! >= 0 ? faces[k]! : 2;
+      await placeCube(g, pads[k]![0] + (pads[k]![0] > 0 ? -1.2 : 1.2), pads[k]![1], want ^ 1);
+      await g.waitFor((f) => (window.game as unknown as Game).challenge().face === f, want ^ 1);
+      await placeCube(g, pads[k]![0], pads[k]![1], want);
+      await g.waitFor((n) => (window.game as unknown as Game).challenge().pad === n, k + 1, 60_000);
+    }
+    // Pad 3 of layout 11 lies in a bed of ROLL tiles one cell wide; the cube set down two cells to its right, off the bed.
+    const beds = await g.page.evaluate(() => (window.game as unknown as { challenge(): { beds: number[] } }).challenge().beds);
+    expect(beds[2]).toBe(1);
+    const [px, pz] = pads[2]!;
+    await placeCube(g, px + 2, pz, 2);
+    await waitCubeAtRest(g);
+    for (const [i, j] of [
+      [0, 0],
+      [1, 0],
+    ] as const) {
+      const moves = await g.page.evaluate(() => (window.game as unknown as Game).challenge().moves);
+      const pops = await g.page.evaluate(() => (window.game as unknown as Game).pop().count);
+      const at = await stillPageOf(g, px + i, 0, pz + j);
+      await g.page.mouse.click(at.x, at.y);
+      const said = await g.waitFor((n) => {
+        const p = (window.game as unknown as Game).pop();
+        return p.count > n ? p.text : null;
+      }, pops);
+      expect(said, `cell (${i}, ${j}) of the pad`).toContain('roll onto it');
+      await g.frames(10);
+      expect(await g.page.evaluate(() => (window.game as unknown as Game).challenge().moves)).toBe(moves);
+      const s = await cubeState(g);
+      expect(Math.hypot(s.x - (px + 2), s.z - pz), `cell (${i}, ${j}): the cube stays`).toBeLessThan(0.05);
+    }
+    expect(g.errors).toEqual([]);
+    await g.close();
+  }, 240_000);
+
   it('rotating-cube (room): the settings drawer, open over the stage, moves the room into the part it leaves free; closed, the view is whole again', async () => {
     // At the desktop size a stranger played (the drawer is 380 px of the 1280).
     const g = await h.openGame('rotating-cube', { query: { seed: 11 }, viewport: { width: 1280, height: 800 }, readyTimeoutMs: 60_000 });

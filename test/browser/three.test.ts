@@ -584,24 +584,69 @@ describe('3D games in headless Chromium', () => {
     await g.close();
   });
 
-  it('rotating-cube: held keys and a click on a face change the angular velocity', async () => {
+  it("rotating-cube: on the pivot each held key moves ω's tip its labelled way on screen; a click on a face changes ω", async () => {
     const g = await open('rotating-cube', { mode: 'cube' }); // on its pivot (the default is the room)
     // It starts tumbling slowly; X stops it.
     const w0 = await g.page.evaluate(() => (window.game as unknown as { angularVelocity(): number[] }).angularVelocity());
     expect(Math.hypot(...w0)).toBeGreaterThan(0.1);
     await g.press('x');
     await g.waitFor(() => Math.hypot(...(window.game as unknown as { angularVelocity(): number[] }).angularVelocity()) === 0, null);
-    await g.page.keyboard.down('d');
-    await g.waitFor(() => Math.hypot(...(window.game as unknown as { angularVelocity(): number[] }).angularVelocity()) > 0.2, null, 20_000);
-    await g.page.keyboard.up('d');
-    // The key torque is refreshed once a frame: let a frame see D released before X stops the spin
-    // (under load an X between the release and that frame was undone by one more step of torque).
-    await g.frames(3);
-    // D yaws about the camera's up axis: mostly world y for this camera.
-    const w1 = await g.page.evaluate(() => (window.game as unknown as { angularVelocity(): number[] }).angularVelocity());
-    expect(Math.abs(w1[1]!)).toBeGreaterThan(Math.abs(w1[0]!));
-    await g.page.keyboard.press('x');
-    await g.waitFor(() => Math.hypot(...(window.game as unknown as { angularVelocity(): number[] }).angularVelocity()) === 0, null);
+    // Each key, held from rest, moves the ω arrow's tip the way its label says on screen: W up, S down,
+    // A left, D right (the tip's page position through the game's camera, against the pivot's; page y
+    // grows downwards), Q toward the camera, E away (ω along the camera's back axis, from its matrix).
+    const want: Record<string, [number, number, number]> = {
+      w: [0, -1, 0],
+      s: [0, 1, 0],
+      a: [-1, 0, 0],
+      d: [1, 0, 0],
+      q: [0, 0, 1],
+      e: [0, 0, -1],
+    };
+    for (const [key, [sx, sy, sb]] of Object.entries(want)) {
+      await g.page.keyboard.down(key);
+      await g.waitFor(
+        () => Math.hypot(...(window.game as unknown as { angularVelocity(): number[] }).angularVelocity()) > 0.2,
+        null,
+        20_000,
+      );
+      await g.page.keyboard.up(key);
+      // The key torque is refreshed once a frame: let a frame see the key released before X stops the spin
+      // (under load an X between the release and that frame was undone by one more step of torque).
+      await g.frames(3);
+      const seen = await g.page.evaluate(() => {
+        type V = { x: number; y: number; z: number; project(c: unknown): V; applyMatrix4(m: unknown): V };
+        const game = window.game as unknown as {
+          angularVelocity(): number[];
+          omegaArrow(): { from: number[]; scale: number };
+          app: { camera: { position: { constructor: new (x: number, y: number, z: number) => V }; matrixWorldInverse: unknown } };
+        };
+        const w = game.angularVelocity();
+        const { from, scale } = game.omegaArrow();
+        const V3 = game.app.camera.position.constructor;
+        const page = (v: V) => {
+          const p = v.project(game.app.camera);
+          const r = document.querySelector('canvas')!.getBoundingClientRect();
+          return [r.left + ((p.x + 1) / 2) * r.width, r.top + ((1 - p.y) / 2) * r.height];
+        };
+        const o = page(new V3(from[0]!, from[1]!, from[2]!));
+        const tip = page(new V3(from[0]! + w[0]! * scale, from[1]! + w[1]! * scale, from[2]! + w[2]! * scale));
+        // ω in the camera's frame (a direction: the view matrix's rotation only); z is the camera's back axis.
+        const inView = new V3(w[0]!, w[1]!, w[2]!).applyMatrix4(game.app.camera.matrixWorldInverse);
+        const origin = new V3(0, 0, 0).applyMatrix4(game.app.camera.matrixWorldInverse);
+        return { dx: tip[0]! - o[0]!, dy: tip[1]! - o[1]!, back: inView.z - origin.z, w: Math.hypot(...w) };
+      });
+      const moved = Math.hypot(seen.dx, seen.dy);
+      if (sb === 0) {
+        // On screen along the label's direction, within 15 degrees (cos 15° = 0.966), by more than 10 px.
+        expect(moved, `${key}: the tip moved ${moved.toFixed(1)} px`).toBeGreaterThan(10);
+        expect(
+          (seen.dx * sx + seen.dy * sy) / moved,
+          `${key}: tip moved (${seen.dx.toFixed(1)}, ${seen.dy.toFixed(1)}) px`,
+        ).toBeGreaterThan(0.966);
+      } else expect((seen.back * sb) / seen.w, `${key}: ω along the camera's back axis`).toBeGreaterThan(0.966);
+      await g.page.keyboard.press('x');
+      await g.waitFor(() => Math.hypot(...(window.game as unknown as { angularVelocity(): number[] }).angularVelocity()) === 0, null);
+    }
     await g.press('p');
     // A click a little off the centre of the cube hits a face off its centre: torque r x J != 0.
     await g.clickCanvas(0.54, 0.46);

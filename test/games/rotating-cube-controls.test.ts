@@ -16,12 +16,12 @@ describe('rotating cube legend', () => {
     for (const c of cubeControls('room', false)) expect(c.action).not.toMatch(/pivot:|pitch|yaw|\broll\)/);
   });
 
-  it('pivot modes: Q E spin it like a wheel facing the player, W S tip it, A D turn it', () => {
-    for (const mode of ['cube', 'flip'] as const) {
-      expect(line(mode, false, 'Q E')).toMatch(/like a wheel facing you/);
-      expect(line(mode, false, 'W S, A D')).toMatch(/tip it .* \(W S\), turn it left or right \(A D\)/);
-      expect(cubeControls(mode, false).some((c) => c.keys === 'Space')).toBe(false);
-    }
+  it("flip: Q E spin it like a wheel facing the player, W S tip it, A D turn it; free spin: the keys push the arrow's tip on screen", () => {
+    expect(line('flip', false, 'Q E')).toMatch(/like a wheel facing you/);
+    expect(line('flip', false, 'W S, A D')).toMatch(/tip it .* \(W S\), turn it left or right \(A D\)/);
+    expect(line('cube', false, 'W S, A D')).toMatch(/tip up or down \(W S\), left or right \(A D\) on screen/);
+    expect(line('cube', false, 'Q E')).toMatch(/toward you or away/);
+    for (const mode of ['cube', 'flip'] as const) expect(cubeControls(mode, false).some((c) => c.keys === 'Space')).toBe(false);
   });
 
   it('on a touch screen the room legend says a drag across the cube flicks it', () => {

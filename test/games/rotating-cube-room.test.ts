@@ -807,6 +807,12 @@ describe('rotating-cube round ends and the moves-to-go indicator', () => {
     const lost = roundEnd('flip', rounds, world)!;
     expect([lost.title, lost.won, lost.retry]).toEqual(['Time!', false, 'Try again']);
     expect(lost.big).toBe(`${starText(rounds.flips.stars())} ${rounds.flips.counter.count} flips`);
+    // A won round's card names the page's kick control and the best time: the lower of this round's and the visit's before it.
+    rounds.flips.wonAt = rounds.flips.startedAt + 8.5;
+    const phone = roundEnd('flip', rounds, world, Infinity, { kick: 'the Pitch ▲ ▼ buttons', bestFlipTime: 7.2 })!;
+    expect(phone.detail).toMatch(/^best 7\.2 s · .*a kick \(the Pitch ▲ ▼ buttons\)/);
+    expect(roundEnd('flip', rounds, world, Infinity, { bestFlipTime: 12 })!.detail).toMatch(/^best 8\.5 s · .*a kick \(W or S\)/);
+    rounds.flips.wonAt = -1;
 
     // The cube on its pivot with its spin set on each target in turn (a cube's moments are equal, so it keeps that spin).
     const pw = createPhysicsWorld(rotatingCubeWorldOptions('cube'));
