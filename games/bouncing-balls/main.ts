@@ -125,6 +125,7 @@ import {
   throwPath,
 } from './hoop';
 import { createKnockLimiter, KNOCK_LIMITS } from './knocks';
+import { drawFloor, drawGlint, drawShadow, drawWall, shadeBallTexture } from './looks';
 import {
   applyDrag,
   applyGravity,
@@ -2289,6 +2290,22 @@ function drawHoop(): void {
     hoopLayer.moveTo(x, yLine).lineTo(Math.min(x + dash, cam.toScreenX(box.max[0])), yLine);
   hoopLayer.stroke({ width: 2, color: 0xff9f43, alpha: 0.45 });
   drawBackboard(spot);
+  // The rim seen from a little above: an ellipse; its back half first, darker, behind the net.
+  const rimX = cam.toScreenX((o.minX + o.maxX) / 2),
+    rimRx = cam.toScreenLength((o.maxX - o.minX) / 2 + HOOP_RADIUS),
+    rimRy = Math.max(3, 0.16 * rimRx);
+  const rimArc = (from: number, to: number): void => {
+    for (let k = 0; k <= 16; k++) {
+      const a = from + ((to - from) * k) / 16;
+      const px = rimX + rimRx * Math.cos(a),
+        py = yLine + rimRy * Math.sin(a);
+      if (k === 0) hoopLayer.moveTo(px, py);
+      else hoopLayer.lineTo(px, py);
+    }
+  };
+  const rimBack = Math.max(2, cam.toScreenLength(1.2 * HOOP_RADIUS));
+  rimArc(Math.PI, 2 * Math.PI);
+  hoopLayer.stroke({ width: rimBack, color: 0xa8440a, cap: 'round' });
   // The net: five strings from the rim to the narrower bottom, crossed by two rows of diagonals
   // (a diamond mesh), white, over the balls inside it.
   const L = o.minX,
@@ -2315,11 +2332,14 @@ function drawHoop(): void {
   line(at(0, 1), at(1, 1));
   hoopLayer.stroke({ width: 1.6, color: 0xf4f6fb, alpha: 0.85 });
   // The rim across the opening (drawn only: balls pass through it), thick orange with a dark edge.
+  // Its front half over the net: a dark edge, the orange tube, a light line along its top (lit from above).
   const rimW = Math.max(4, cam.toScreenLength(2 * HOOP_RADIUS));
-  line([L - HOOP_RADIUS, o.y], [R + HOOP_RADIUS, o.y]);
+  rimArc(0, Math.PI);
   hoopLayer.stroke({ width: rimW + 2, color: 0x7a2e05, cap: 'round' });
-  line([L - HOOP_RADIUS, o.y], [R + HOOP_RADIUS, o.y]);
+  rimArc(0, Math.PI);
   hoopLayer.stroke({ width: rimW, color: 0xff7a1a, cap: 'round' });
+  rimArc(0.15, Math.PI - 0.15);
+  hoopLayer.stroke({ width: Math.max(1, rimW / 3), color: 0xffc08a, alpha: 0.8, cap: 'round' });
   // Over the backboard, a dot for each basket the hoop stays for (BASKETS_PER_HOOP): gold for those
   // scored here, hollow for those to go before it moves; none once the round is over (the end card
   // stands there).
@@ -2459,10 +2479,21 @@ function drawBackboard(spot: HoopSpot): void {
   const x = cam.toScreenX(bx),
     top = cam.toScreenY(by1),
     bottom = cam.toScreenY(by0);
+  // Its soft shadow on the wall behind and below (the lamp is above), then the board: the glass's edge
+  // seen side-on, a shaded face towards the wall, a lit front face, and a glint along it.
+  const sh = Math.max(3, 0.6 * t);
+  for (const [grow, a] of [
+    [sh, 0.1],
+    [sh / 2, 0.14],
+  ] as const)
+    bracketLayer.roundRect(x - t / 2 - grow / 2 + sh / 2, top + sh, t + grow, bottom - top + grow, t).fill({ color: 0x000000, alpha: a });
+  const side = -spot.side;
   hoopLayer
     .roundRect(x - t / 2, top, t, bottom - top, t / 2)
-    .fill(0xf4f6fb)
-    .stroke({ width: 1.5, color: 0x8a93a6 });
+    .fill(0xc9d0de)
+    .stroke({ width: 1.5, color: 0x5e6678 });
+  hoopLayer.roundRect(x + (side > 0 ? 0 : -t / 2) + 1, top + 2, t / 2 - 1, bottom - top - 4, t / 4).fill(0xf8faff);
+  hoopLayer.rect(x + side * (t / 4) - 0.75, top + t / 2, 1.5, (bottom - top) * 0.45).fill({ color: 0xffffff, alpha: 0.9 });
 }
 
 // ---- The court: wall, floor, frame and ramps (redrawn when the camera changes) --------------------
@@ -2484,6 +2515,11 @@ app.stage.addChildAt(standLabel, 1);
 /** The backboard's bracket, on the wall under the balls (drawBackboard). */
 const bracketLayer = new Graphics({ label: 'hoop-bracket' });
 app.stage.addChildAt(bracketLayer, 2);
+/** The balls' soft shadows on the floor, under the balls (drawShadows). */
+const shadowLayer = new Graphics({ label: 'ball-shadows' });
+app.stage.addChildAt(shadowLayer, 3);
+// Every ball (sprite or particle) shares one disc texture: redrawn once as a lit sphere.
+shadeBallTexture(renderer.root);
 // The renderer's walls (thin lines with end dots, the box's outline) look like a physics diagram:
 // the court draws them as a frame and wooden ramps instead.
 const plainWalls = renderer.root.children.find((c) => c.label === 'walls');
@@ -2501,25 +2537,10 @@ function drawCourt(): void {
     y0 = cam.toScreenY(box.max[1]),
     y1 = cam.toScreenY(box.min[1]);
   court.clear();
-  // The wall: bands darker upwards, and panels 2 m wide.
-  const bands = 10;
-  for (let i = 0; i < bands; i++) {
-    const f = i / (bands - 1);
-    const c = (Math.round(0x1a + 0x12 * f) << 16) | (Math.round(0x24 + 0x16 * f) << 8) | Math.round(0x3a + 0x1c * f);
-    const ya = y0 + ((y1 - y0) * i) / bands;
-    court.rect(x0, ya, x1 - x0, (y1 - y0) / bands + 1).fill(c);
-  }
-  for (let x = box.min[0] + 2; x < box.max[0] - 0.5; x += 2)
-    court.moveTo(cam.toScreenX(x), y0).lineTo(cam.toScreenX(x), y1).stroke({ width: 1, color: 0x3b4a6b, alpha: 0.6 });
-  // The floor under the box: hardwood boards, 0.35 m deep, with their seams.
+  // The wall (painted blocks lit from above) and the hardwood floor under the box, 0.35 m deep.
   const floor = Math.max(10, cam.toScreenLength(0.35));
-  court.rect(x0, y1, x1 - x0, floor).fill(0xc8904f);
-  court.rect(x0, y1, x1 - x0, 2).fill(0xe3b276);
-  for (let x = box.min[0] + 1.3; x < box.max[0]; x += 1.3)
-    court
-      .moveTo(cam.toScreenX(x), y1 + 2)
-      .lineTo(cam.toScreenX(x), y1 + floor)
-      .stroke({ width: 1, color: 0x9a6a35 });
+  drawWall(court, { x0, x1, y0, y1 }, Math.max(8, cam.toScreenLength(0.5)));
+  drawFloor(court, { x0, x1, y0, y1 }, floor, Math.max(20, cam.toScreenLength(1.3)));
   // The frame: dark steel round the box, a lighter inner edge.
   const w = Math.max(6, cam.toScreenLength(0.18));
   court.rect(x0 - w, y0 - w, x1 - x0 + 2 * w, w).fill(0x3a4252);
@@ -2557,6 +2578,31 @@ function drawCourt(): void {
 const seams = new Graphics({ label: 'basketball-seams' });
 app.stage.addChild(seams);
 
+/** Balls up to which each ball gets a glint and a shadow (beyond, a frame's extra shapes would cost too much). */
+const SHADED_MAX = 400;
+
+/** Draws each ball's glint (into `seams`) and its soft shadow on the floor (shadowLayer), at its drawn place. */
+function drawShading(alpha: number, world: PhysicsWorld): void {
+  shadowLayer.clear();
+  if (handles.balls.length > SHADED_MAX) return;
+  const cam = renderer.camera;
+  const c = world.components,
+    P = c.Position,
+    O = c.PreviousPosition;
+  const floorY = cam.toScreenY(layoutOf(TALL).box.min[1]);
+  for (const e of handles.balls) {
+    if (e === liftedShown) continue;
+    const s = slotOf(e);
+    const x = cam.toScreenX(O.x[s]! + (P.x[s]! - O.x[s]!) * alpha),
+      y = cam.toScreenY(O.y[s]! + (P.y[s]! - O.y[s]!) * alpha);
+    const r = cam.toScreenLength(c.Ball.radius[s]!);
+    const fade = fading.get(e);
+    const shown = fade ? Math.max(0, 1 - (world.time - fade.at) / FADE_SECONDS) : 1;
+    drawShadow(shadowLayer, x, floorY, r, floorY - (y + r));
+    drawGlint(seams, x, y, r, shown);
+  }
+}
+
 /** Draws each player's ball's seams (a black outline, two crossing seams and two curved ones) at its drawn place, turned with it. */
 function drawBasketballs(alpha: number, world: PhysicsWorld): void {
   const cam = renderer.camera;
@@ -2564,6 +2610,7 @@ function drawBasketballs(alpha: number, world: PhysicsWorld): void {
   const c = world.components,
     P = c.Position,
     O = c.PreviousPosition;
+  drawShading(alpha, world);
   const r = cam.toScreenLength(PLAYER_RADIUS);
   const w = Math.max(1, 0.09 * r);
   for (const e of basketballs) {
