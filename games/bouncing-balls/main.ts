@@ -2891,7 +2891,9 @@ function drawCountdown(): void {
 
 // ---- The end of a round: a card with the points and what made them ------------------------------
 
-const endCard = createResultCard(app.stage, { label: 'end-card', bigSize: 56 });
+// On a phone the box is about 340 px wide: the big line ("263 points") in 42 px type keeps a margin
+// inside the card's sides (in 56 px it filled the card edge to edge).
+const endCard = createResultCard(app.stage, { label: 'end-card', bigSize: TALL ? 42 : 56 });
 
 /** Gap, CSS px, between the end card and the pause overlay's words moved off it. */
 const PAUSE_WORDS_GAP = 16;
