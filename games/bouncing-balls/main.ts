@@ -1867,7 +1867,14 @@ function powerColor(power: number): number {
 /** The label over a press held on a ball (what the hold does) and over a ball picked up (how to let go). */
 const holdLabel = new Text({
   text: '',
-  style: { fontFamily: 'system-ui, sans-serif', fontSize: 14, fontWeight: '600', fill: 0xffffff, stroke: { color: 0x0b0f16, width: 4 } },
+  style: {
+    fontFamily: 'system-ui, sans-serif',
+    fontSize: 14,
+    fontWeight: '600',
+    align: 'center',
+    fill: 0xffffff,
+    stroke: { color: 0x0b0f16, width: 4 },
+  },
 });
 holdLabel.anchor.set(0.5, 1);
 holdLabel.visible = false;
@@ -2159,6 +2166,9 @@ function drawPointer(): void {
     const lifted = lift !== null && (lift[0] !== P.x[slotOf(pressed)] || lift[1] !== P.y[slotOf(pressed)]);
     label = `${lifted ? 'lifted · ' : ''}${label} · ${points} ${points === 1 ? 'point' : 'points'}`;
   }
+  // The arc is cut to AIM_SECONDS once the clock runs (after the first basket): said on the next
+  // throws' labels until the second basket, so a shorter line reads as the game's rule, not a fault.
+  if (round.phase !== 'ready' && round.score <= 1) label += `\naim line shortened: the clock runs`;
   showHoldLabel(label, ox, oy - gr - 6);
   if (cut !== null) {
     const sx = cam.toScreenX(cut.x),
