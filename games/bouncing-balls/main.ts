@@ -1958,6 +1958,9 @@ function placeInside(label: Text, x: number, y: number): void {
   label.position.set(half * 2 >= w ? w / 2 : Math.min(w - half, Math.max(half, x)), Math.max(label.height + 2, y));
 }
 
+/** Radius of the power ring drawn round a finger pulling a throw on a touch screen, CSS px: clear of a thumb's contact (about 10 mm across). */
+const FINGER_RING_PX = 40;
+
 /**
  * Draws the pointer preview: the ball to be dropped; while pulling, the ball at its spot (orange if
  * it may score, grey if above the rim's line; a buried ball lifted to the top of the heap, or refused
@@ -2127,6 +2130,20 @@ function drawPointer(): void {
       .moveTo(bx - w * uy, by + w * ux)
       .lineTo(bx + w * uy, by - w * ux)
       .stroke({ width: 2, color: 0xffffff, alpha: 0.95 });
+  }
+  // On a touch screen the thumb covers the ball and its gauge in a pull straight down: a ring round
+  // the finger, wider than a thumb's contact, repeats the gauge where the eye is (dark track, the
+  // power filling clockwise from the top).
+  if (TOUCH_UI) {
+    const fr = FINGER_RING_PX;
+    overlay.circle(lastX, lastY, fr).stroke({ width: 7, color: 0x0b0f16, alpha: 0.5 });
+    const steps = Math.max(1, Math.ceil(48 * power));
+    overlay.moveTo(lastX, lastY - fr);
+    for (let j = 1; j <= steps; j++) {
+      const a = -Math.PI / 2 + (2 * Math.PI * power * j) / steps;
+      overlay.lineTo(lastX + fr * Math.cos(a), lastY + fr * Math.sin(a));
+    }
+    overlay.stroke({ width: 4, color: powerColor(power), alpha: 0.95 });
   }
   const path = aimPath();
   const n = path.length / 2;
