@@ -708,7 +708,9 @@ function playHoop(world: PhysicsWorld): void {
       };
       flights.delete(e);
       basketballs.delete(e);
+      const sunk = world.components.Ball.radius[slotOf(e)]!;
       removeBall(world, handles, e);
+      feedHeap(world, opening, sunk);
       if (e === goldBall) pickGold(world);
       cheer(round.score, b.kind);
       keepBest();
@@ -845,6 +847,21 @@ function mixColor(a: number, b: number, t: number): number {
     out |= Math.round(ca + (cb - ca) * t) << shift;
   }
   return out;
+}
+
+/**
+ * Gives the heap back a ball for one that went in, so it keeps as many balls as the round began with
+ * (params.count; the player's own balls not counted) and a round's last throws still have a choice:
+ * a ball of the sunk one's `radius` (m) drops out under the net of the hoop whose `opening` it went
+ * through and rolls off towards the middle of the box, back into the heap.
+ */
+function feedHeap(world: PhysicsWorld, opening: { minX: number; maxX: number; y: number }, radius: number): void {
+  if (handles.balls.length - basketballs.size >= params.count) return;
+  const { box } = layoutOf(TALL);
+  const x = 0.5 * (opening.minX + opening.maxX),
+    y = opening.y - NET.depth - radius - 0.05;
+  const toMiddle = Math.sign(0.5 * (box.min[0] + box.max[0]) - x) || 1;
+  spawnBall(world, handles, x, y, 1.5 * toMiddle, -1, radius);
 }
 
 /**
