@@ -1429,6 +1429,59 @@ function columnTop(x: number, floor: readonly [number, number]): number {
   return top || near;
 }
 
+/**
+ * Whether ball `e` has a free way up: no other ball touches it on its upper half (a throw up and to
+ * that side would drive into it, "blocked") and none lies in the column straight over it.
+ */
+function freeUp(e: number): boolean {
+  const c = shell.world.components,
+    P = c.Position,
+    R = c.Ball.radius,
+    s = slotOf(e);
+  const x = P.x[s]!,
+    y = P.y[s]!;
+  for (const o of handles.balls) {
+    if (o === e || flights.has(o)) continue;
+    const q = slotOf(o);
+    const dx = P.x[q]! - x,
+      dy = P.y[q]! - y,
+      sum = R[s]! + R[q]!;
+    if (dy <= 0) continue;
+    if (Math.hypot(dx, dy) < sum + 0.03 || Math.abs(dx) < 0.8 * sum) return false;
+  }
+  return true;
+}
+
+/** How far sideways of a press a ball with a free way up may be and still be the one it throws, m. */
+const FREE_PICK_REACH = 0.9;
+
+/**
+ * The ball a press at (x, y), m, throws when the ball under it (`under`, 0 for none) has no free way
+ * up (freeUp): the free ball nearest the press within FREE_PICK_REACH of its edge (under the floor,
+ * `stand`: by sideways distance alone, the heap's free top near that x); `under` itself when it is
+ * free, buried (then it is lifted, liftSpot) or no free ball is near. Resting balls only.
+ */
+function pickFree(under: number, x: number, y: number, stand: boolean): number {
+  if (under !== 0 && (freeUp(under) || (!stand && buried(under)))) return under;
+  const c = shell.world.components,
+    P = c.Position,
+    V = c.Velocity,
+    R = c.Ball.radius;
+  let best = under,
+    bestGap = FREE_PICK_REACH;
+  for (const e of handles.balls) {
+    if (e === under || flights.has(e) || fading.has(e)) continue;
+    const s = slotOf(e);
+    if (V.x[s]! ** 2 + V.y[s]! ** 2 > COLUMN_REST_SPEED ** 2) continue;
+    const gap = (stand ? Math.abs(P.x[s]! - x) : Math.hypot(P.x[s]! - x, P.y[s]! - y)) - R[s]!;
+    if (gap < bestGap && freeUp(e)) {
+      best = e;
+      bestGap = gap;
+    }
+  }
+  return best;
+}
+
 /** Whether the current press began under the box's floor (on the court's stand): it throws the ball over it (columnTop); a tap there does nothing. */
 let pressStand = false;
 /** When a tap on the stand was let go (performance.now() ms; its hint shows HOOP_TAP_SHOWN ms), or -Infinity. */
@@ -1450,7 +1503,9 @@ canvas.addEventListener('pointerdown', (event) => {
     Math.min(box.max[0] - PLAYER_RADIUS, Math.max(box.min[0] + PLAYER_RADIUS, wx)),
     box.min[1] + PLAYER_RADIUS + START_CLEARANCE,
   ];
-  const onBall = stand ? columnTop(wx, floor) : ballUnder(wx, wy);
+  // A ball with a neighbour over it would be "blocked": the free ball nearest the press is taken instead.
+  const under = stand ? columnTop(wx, floor) : ballUnder(wx, wy);
+  const onBall = under !== 0 ? pickFree(under, wx, wy, stand) : 0;
   const spot = onBall !== 0 ? null : startSpot(...(stand ? floor : ([wx, wy] as const)));
   // Where no ball can start (a ramp's far side) and nothing to pick up: the press does nothing, seen or heard.
   if (onBall === 0 && spot === null && !bodyUnder(wx, wy)) return;
@@ -1542,7 +1597,11 @@ function release(event: PointerEvent, cancelled: boolean): void {
   const cancel = inCancelZone();
   pressBall = 0;
   if (cancel) return;
-  if (dragged && blockedAtOnce(t, ball)) {
+  // What the label said at this pointer's spot decides (the frame's check), so the outcome agrees with
+  // it; a release away from the last drawn spot is checked afresh.
+  const saidBlocked = Math.hypot(lastX - shownBlocked.x, lastY - shownBlocked.y) < 3 ? shownBlocked.blocked : blockedAtOnce(t, ball);
+  shownBlocked = { blocked: false, x: Number.NaN, y: Number.NaN };
+  if (dragged && saidBlocked) {
     // Its arc showed a ball in the way at once ("blocked"): letting go throws nothing (no shot, no
     // miss to end the streak) and says to pick the ball on top.
     blockedAt = performance.now();
@@ -1567,6 +1626,8 @@ function release(event: PointerEvent, cancelled: boolean): void {
     if (last) lastCall.ball = e;
   }
 }
+/** Whether the last drawn aiming label said "blocked", and the pointer's spot then (CSS px on the canvas). */
+let shownBlocked = { blocked: false, x: Number.NaN, y: Number.NaN };
 /** When a release was refused because a ball was in the way at once (performance.now() ms; its hint shows HOOP_TAP_SHOWN ms), or -Infinity. */
 let blockedAt = Number.NEGATIVE_INFINITY;
 /** Where that refused throw would have started, m. */
@@ -2040,6 +2101,17 @@ function drawPointer(): void {
   }
   if (!dragged) {
     overlay.circle(startX, startY, r).stroke({ width: 2, color: 0xffffff, alpha: 0.6 });
+    // The ball a pull will throw (the free one pickFree took, maybe not the one under the press):
+    // ringed before the pull, tied to the press by a dashed line when it is another.
+    if (pressBall !== 0 && handles.balls.includes(pressBall)) {
+      const s = slotOf(pressBall),
+        P = shell.world.components.Position;
+      const bx = cam.toScreenX(P.x[s]!),
+        by = cam.toScreenY(P.y[s]!),
+        br = cam.toScreenLength(shell.world.components.Ball.radius[s]!);
+      overlay.circle(bx, by, br + 4).stroke({ width: 3, color: 0xffffff, alpha: 0.9 });
+      if (Math.hypot(bx - startX, by - startY) > br + 4) dashTo(bx, by, br + 6, startX, startY);
+    }
     // Held still on a ball or crate: after HOLD_RING_MS a ring fills, picking it up when full (a
     // pull before then throws), and a label says so.
     const held = performance.now() - holdStart;
@@ -2194,6 +2266,7 @@ function drawPointer(): void {
   // cross is small and under the gauge (a heap ball thrown into its neighbour rolled off along the
   // heap), and letting go throws nothing (release).
   const soon = cut?.soon === true;
+  shownBlocked = { blocked: soon, x: lastX, y: lastY };
   let label = `${soon ? 'blocked · ' : ''}power ${Math.round(100 * power)}%${capped ? ' (max)' : ''}${assisting ? ' · on target' : ''}`;
   if (pressed !== 0) {
     const points = BALL_POINTS[kindOf(pressed)];
