@@ -852,16 +852,25 @@ function mixColor(a: number, b: number, t: number): number {
 /**
  * Gives the heap back a ball for one that went in, so it keeps as many balls as the round began with
  * (params.count; the player's own balls not counted) and a round's last throws still have a choice:
- * a ball of the sunk one's `radius` (m) drops out under the net of the hoop whose `opening` it went
- * through and rolls off towards the middle of the box, back into the heap.
+ * a ball of the sunk one's `radius` (m) comes back in at the box's side away from the hoop whose
+ * `opening` it went through (clear of the throws' way to it), just over the heap there, and rolls
+ * towards the middle.
  */
 function feedHeap(world: PhysicsWorld, opening: { minX: number; maxX: number; y: number }, radius: number): void {
   if (handles.balls.length - basketballs.size >= params.count) return;
   const { box } = layoutOf(TALL);
-  const x = 0.5 * (opening.minX + opening.maxX),
-    y = opening.y - NET.depth - radius - 0.05;
-  const toMiddle = Math.sign(0.5 * (box.min[0] + box.max[0]) - x) || 1;
-  spawnBall(world, handles, x, y, 1.5 * toMiddle, -1, radius);
+  const mid = 0.5 * (box.min[0] + box.max[0]);
+  const side = 0.5 * (opening.minX + opening.maxX) > mid ? -1 : 1;
+  const x = side < 0 ? box.min[0] + radius + 0.05 : box.max[0] - radius - 0.05;
+  // Over every ball in its column, so it overlaps none.
+  const c = world.components;
+  let y = box.min[1] + radius + 0.05;
+  for (const e of handles.balls) {
+    const q = slotOf(e);
+    if (Math.abs(c.Position.x[q]! - x) < radius + c.Ball.radius[q]!) y = Math.max(y, c.Position.y[q]! + c.Ball.radius[q]! + radius + 0.05);
+  }
+  if (y + radius > box.max[1]) return;
+  spawnBall(world, handles, x, y, -1.5 * side, 0, radius);
 }
 
 /**
