@@ -125,6 +125,7 @@ import {
   throwPath,
 } from './hoop';
 import { createKnockLimiter, KNOCK_LIMITS } from './knocks';
+import { drawFloor, drawGlint, drawShadow, drawWall, shadeBallTexture } from './looks';
 import {
   applyDrag,
   applyGravity,
@@ -707,7 +708,9 @@ function playHoop(world: PhysicsWorld): void {
       };
       flights.delete(e);
       basketballs.delete(e);
+      const sunk = world.components.Ball.radius[slotOf(e)]!;
       removeBall(world, handles, e);
+      feedHeap(world, opening, sunk);
       if (e === goldBall) pickGold(world);
       cheer(round.score, b.kind);
       keepBest();
@@ -844,6 +847,30 @@ function mixColor(a: number, b: number, t: number): number {
     out |= Math.round(ca + (cb - ca) * t) << shift;
   }
   return out;
+}
+
+/**
+ * Gives the heap back a ball for one that went in, so it keeps as many balls as the round began with
+ * (params.count; the player's own balls not counted) and a round's last throws still have a choice:
+ * a ball of the sunk one's `radius` (m) comes back in at the box's side away from the hoop whose
+ * `opening` it went through (clear of the throws' way to it), just over the heap there, and rolls
+ * towards the middle.
+ */
+function feedHeap(world: PhysicsWorld, opening: { minX: number; maxX: number; y: number }, radius: number): void {
+  if (handles.balls.length - basketballs.size >= params.count) return;
+  const { box } = layoutOf(TALL);
+  const mid = 0.5 * (box.min[0] + box.max[0]);
+  const side = 0.5 * (opening.minX + opening.maxX) > mid ? -1 : 1;
+  const x = side < 0 ? box.min[0] + radius + 0.05 : box.max[0] - radius - 0.05;
+  // Over every ball in its column, so it overlaps none.
+  const c = world.components;
+  let y = box.min[1] + radius + 0.05;
+  for (const e of handles.balls) {
+    const q = slotOf(e);
+    if (Math.abs(c.Position.x[q]! - x) < radius + c.Ball.radius[q]!) y = Math.max(y, c.Position.y[q]! + c.Ball.radius[q]! + radius + 0.05);
+  }
+  if (y + radius > box.max[1]) return;
+  spawnBall(world, handles, x, y, -1.5 * side, 0, radius);
 }
 
 /**
@@ -1411,6 +1438,59 @@ function columnTop(x: number, floor: readonly [number, number]): number {
   return top || near;
 }
 
+/**
+ * Whether ball `e` has a free way up: no other ball touches it on its upper half (a throw up and to
+ * that side would drive into it, "blocked") and none lies in the column straight over it.
+ */
+function freeUp(e: number): boolean {
+  const c = shell.world.components,
+    P = c.Position,
+    R = c.Ball.radius,
+    s = slotOf(e);
+  const x = P.x[s]!,
+    y = P.y[s]!;
+  for (const o of handles.balls) {
+    if (o === e || flights.has(o)) continue;
+    const q = slotOf(o);
+    const dx = P.x[q]! - x,
+      dy = P.y[q]! - y,
+      sum = R[s]! + R[q]!;
+    if (dy <= 0) continue;
+    if (Math.hypot(dx, dy) < sum + 0.03 || Math.abs(dx) < 0.8 * sum) return false;
+  }
+  return true;
+}
+
+/** How far sideways of a press a ball with a free way up may be and still be the one it throws, m. */
+const FREE_PICK_REACH = 0.9;
+
+/**
+ * The ball a press at (x, y), m, throws when the ball under it (`under`, 0 for none) has no free way
+ * up (freeUp): the free ball nearest the press within FREE_PICK_REACH of its edge (under the floor,
+ * `stand`: by sideways distance alone, the heap's free top near that x); `under` itself when it is
+ * free, buried (then it is lifted, liftSpot) or no free ball is near. Resting balls only.
+ */
+function pickFree(under: number, x: number, y: number, stand: boolean): number {
+  if (under !== 0 && (freeUp(under) || (!stand && buried(under)))) return under;
+  const c = shell.world.components,
+    P = c.Position,
+    V = c.Velocity,
+    R = c.Ball.radius;
+  let best = under,
+    bestGap = FREE_PICK_REACH;
+  for (const e of handles.balls) {
+    if (e === under || flights.has(e) || fading.has(e)) continue;
+    const s = slotOf(e);
+    if (V.x[s]! ** 2 + V.y[s]! ** 2 > COLUMN_REST_SPEED ** 2) continue;
+    const gap = (stand ? Math.abs(P.x[s]! - x) : Math.hypot(P.x[s]! - x, P.y[s]! - y)) - R[s]!;
+    if (gap < bestGap && freeUp(e)) {
+      best = e;
+      bestGap = gap;
+    }
+  }
+  return best;
+}
+
 /** Whether the current press began under the box's floor (on the court's stand): it throws the ball over it (columnTop); a tap there does nothing. */
 let pressStand = false;
 /** When a tap on the stand was let go (performance.now() ms; its hint shows HOOP_TAP_SHOWN ms), or -Infinity. */
@@ -1432,7 +1512,9 @@ canvas.addEventListener('pointerdown', (event) => {
     Math.min(box.max[0] - PLAYER_RADIUS, Math.max(box.min[0] + PLAYER_RADIUS, wx)),
     box.min[1] + PLAYER_RADIUS + START_CLEARANCE,
   ];
-  const onBall = stand ? columnTop(wx, floor) : ballUnder(wx, wy);
+  // A ball with a neighbour over it would be "blocked": the free ball nearest the press is taken instead.
+  const under = stand ? columnTop(wx, floor) : ballUnder(wx, wy);
+  const onBall = under !== 0 ? pickFree(under, wx, wy, stand) : 0;
   const spot = onBall !== 0 ? null : startSpot(...(stand ? floor : ([wx, wy] as const)));
   // Where no ball can start (a ramp's far side) and nothing to pick up: the press does nothing, seen or heard.
   if (onBall === 0 && spot === null && !bodyUnder(wx, wy)) return;
@@ -1524,7 +1606,11 @@ function release(event: PointerEvent, cancelled: boolean): void {
   const cancel = inCancelZone();
   pressBall = 0;
   if (cancel) return;
-  if (dragged && blockedAtOnce(t, ball)) {
+  // What the label said at this pointer's spot decides (the frame's check), so the outcome agrees with
+  // it; a release away from the last drawn spot is checked afresh.
+  const saidBlocked = Math.hypot(lastX - shownBlocked.x, lastY - shownBlocked.y) < 3 ? shownBlocked.blocked : blockedAtOnce(t, ball);
+  shownBlocked = { blocked: false, x: Number.NaN, y: Number.NaN };
+  if (dragged && saidBlocked) {
     // Its arc showed a ball in the way at once ("blocked"): letting go throws nothing (no shot, no
     // miss to end the streak) and says to pick the ball on top.
     blockedAt = performance.now();
@@ -1549,6 +1635,8 @@ function release(event: PointerEvent, cancelled: boolean): void {
     if (last) lastCall.ball = e;
   }
 }
+/** Whether the last drawn aiming label said "blocked", and the pointer's spot then (CSS px on the canvas). */
+let shownBlocked = { blocked: false, x: Number.NaN, y: Number.NaN };
 /** When a release was refused because a ball was in the way at once (performance.now() ms; its hint shows HOOP_TAP_SHOWN ms), or -Infinity. */
 let blockedAt = Number.NEGATIVE_INFINITY;
 /** Where that refused throw would have started, m. */
@@ -1866,7 +1954,14 @@ function powerColor(power: number): number {
 /** The label over a press held on a ball (what the hold does) and over a ball picked up (how to let go). */
 const holdLabel = new Text({
   text: '',
-  style: { fontFamily: 'system-ui, sans-serif', fontSize: 14, fontWeight: '600', fill: 0xffffff, stroke: { color: 0x0b0f16, width: 4 } },
+  style: {
+    fontFamily: 'system-ui, sans-serif',
+    fontSize: 14,
+    fontWeight: '600',
+    align: 'center',
+    fill: 0xffffff,
+    stroke: { color: 0x0b0f16, width: 4 },
+  },
 });
 holdLabel.anchor.set(0.5, 1);
 holdLabel.visible = false;
@@ -1950,6 +2045,9 @@ function placeInside(label: Text, x: number, y: number): void {
   label.position.set(half * 2 >= w ? w / 2 : Math.min(w - half, Math.max(half, x)), Math.max(label.height + 2, y));
 }
 
+/** Radius of the power ring drawn round a finger pulling a throw on a touch screen, CSS px: clear of a thumb's contact (about 10 mm across). */
+const FINGER_RING_PX = 40;
+
 /**
  * Draws the pointer preview: the ball to be dropped; while pulling, the ball at its spot (orange if
  * it may score, grey if above the rim's line; a buried ball lifted to the top of the heap, or refused
@@ -2012,6 +2110,17 @@ function drawPointer(): void {
   }
   if (!dragged) {
     overlay.circle(startX, startY, r).stroke({ width: 2, color: 0xffffff, alpha: 0.6 });
+    // The ball a pull will throw (the free one pickFree took, maybe not the one under the press):
+    // ringed before the pull, tied to the press by a dashed line when it is another.
+    if (pressBall !== 0 && handles.balls.includes(pressBall)) {
+      const s = slotOf(pressBall),
+        P = shell.world.components.Position;
+      const bx = cam.toScreenX(P.x[s]!),
+        by = cam.toScreenY(P.y[s]!),
+        br = cam.toScreenLength(shell.world.components.Ball.radius[s]!);
+      overlay.circle(bx, by, br + 4).stroke({ width: 3, color: 0xffffff, alpha: 0.9 });
+      if (Math.hypot(bx - startX, by - startY) > br + 4) dashTo(bx, by, br + 6, startX, startY);
+    }
     // Held still on a ball or crate: after HOLD_RING_MS a ring fills, picking it up when full (a
     // pull before then throws), and a label says so.
     const held = performance.now() - holdStart;
@@ -2120,6 +2229,20 @@ function drawPointer(): void {
       .lineTo(bx + w * uy, by - w * ux)
       .stroke({ width: 2, color: 0xffffff, alpha: 0.95 });
   }
+  // On a touch screen the thumb covers the ball and its gauge in a pull straight down: a ring round
+  // the finger, wider than a thumb's contact, repeats the gauge where the eye is (dark track, the
+  // power filling clockwise from the top).
+  if (TOUCH_UI) {
+    const fr = FINGER_RING_PX;
+    overlay.circle(lastX, lastY, fr).stroke({ width: 7, color: 0x0b0f16, alpha: 0.5 });
+    const steps = Math.max(1, Math.ceil(48 * power));
+    overlay.moveTo(lastX, lastY - fr);
+    for (let j = 1; j <= steps; j++) {
+      const a = -Math.PI / 2 + (2 * Math.PI * power * j) / steps;
+      overlay.lineTo(lastX + fr * Math.cos(a), lastY + fr * Math.sin(a));
+    }
+    overlay.stroke({ width: 4, color: powerColor(power), alpha: 0.95 });
+  }
   const path = aimPath();
   const n = path.length / 2;
   // The dots shrink and fade out along the arc (it ends short of the rim's height: arcSeconds).
@@ -2152,12 +2275,16 @@ function drawPointer(): void {
   // cross is small and under the gauge (a heap ball thrown into its neighbour rolled off along the
   // heap), and letting go throws nothing (release).
   const soon = cut?.soon === true;
+  shownBlocked = { blocked: soon, x: lastX, y: lastY };
   let label = `${soon ? 'blocked · ' : ''}power ${Math.round(100 * power)}%${capped ? ' (max)' : ''}${assisting ? ' · on target' : ''}`;
   if (pressed !== 0) {
     const points = BALL_POINTS[kindOf(pressed)];
     const lifted = lift !== null && (lift[0] !== P.x[slotOf(pressed)] || lift[1] !== P.y[slotOf(pressed)]);
     label = `${lifted ? 'lifted · ' : ''}${label} · ${points} ${points === 1 ? 'point' : 'points'}`;
   }
+  // The arc is cut to AIM_SECONDS once the clock runs (after the first basket): said on the next
+  // throws' labels until the second basket, so a shorter line reads as the game's rule, not a fault.
+  if (round.phase !== 'ready' && round.score <= 1) label += `\naim line shortened: the clock runs`;
   showHoldLabel(label, ox, oy - gr - 6);
   if (cut !== null) {
     const sx = cam.toScreenX(cut.x),
@@ -2289,6 +2416,22 @@ function drawHoop(): void {
     hoopLayer.moveTo(x, yLine).lineTo(Math.min(x + dash, cam.toScreenX(box.max[0])), yLine);
   hoopLayer.stroke({ width: 2, color: 0xff9f43, alpha: 0.45 });
   drawBackboard(spot);
+  // The rim seen from a little above: an ellipse; its back half first, darker, behind the net.
+  const rimX = cam.toScreenX((o.minX + o.maxX) / 2),
+    rimRx = cam.toScreenLength((o.maxX - o.minX) / 2 + HOOP_RADIUS),
+    rimRy = Math.max(3, 0.16 * rimRx);
+  const rimArc = (from: number, to: number): void => {
+    for (let k = 0; k <= 16; k++) {
+      const a = from + ((to - from) * k) / 16;
+      const px = rimX + rimRx * Math.cos(a),
+        py = yLine + rimRy * Math.sin(a);
+      if (k === 0) hoopLayer.moveTo(px, py);
+      else hoopLayer.lineTo(px, py);
+    }
+  };
+  const rimBack = Math.max(2, cam.toScreenLength(1.2 * HOOP_RADIUS));
+  rimArc(Math.PI, 2 * Math.PI);
+  hoopLayer.stroke({ width: rimBack, color: 0xa8440a, cap: 'round' });
   // The net: five strings from the rim to the narrower bottom, crossed by two rows of diagonals
   // (a diamond mesh), white, over the balls inside it.
   const L = o.minX,
@@ -2315,11 +2458,14 @@ function drawHoop(): void {
   line(at(0, 1), at(1, 1));
   hoopLayer.stroke({ width: 1.6, color: 0xf4f6fb, alpha: 0.85 });
   // The rim across the opening (drawn only: balls pass through it), thick orange with a dark edge.
+  // Its front half over the net: a dark edge, the orange tube, a light line along its top (lit from above).
   const rimW = Math.max(4, cam.toScreenLength(2 * HOOP_RADIUS));
-  line([L - HOOP_RADIUS, o.y], [R + HOOP_RADIUS, o.y]);
+  rimArc(0, Math.PI);
   hoopLayer.stroke({ width: rimW + 2, color: 0x7a2e05, cap: 'round' });
-  line([L - HOOP_RADIUS, o.y], [R + HOOP_RADIUS, o.y]);
+  rimArc(0, Math.PI);
   hoopLayer.stroke({ width: rimW, color: 0xff7a1a, cap: 'round' });
+  rimArc(0.15, Math.PI - 0.15);
+  hoopLayer.stroke({ width: Math.max(1, rimW / 3), color: 0xffc08a, alpha: 0.8, cap: 'round' });
   // Over the backboard, a dot for each basket the hoop stays for (BASKETS_PER_HOOP): gold for those
   // scored here, hollow for those to go before it moves; none once the round is over (the end card
   // stands there).
@@ -2459,10 +2605,21 @@ function drawBackboard(spot: HoopSpot): void {
   const x = cam.toScreenX(bx),
     top = cam.toScreenY(by1),
     bottom = cam.toScreenY(by0);
+  // Its soft shadow on the wall behind and below (the lamp is above), then the board: the glass's edge
+  // seen side-on, a shaded face towards the wall, a lit front face, and a glint along it.
+  const sh = Math.max(3, 0.6 * t);
+  for (const [grow, a] of [
+    [sh, 0.1],
+    [sh / 2, 0.14],
+  ] as const)
+    bracketLayer.roundRect(x - t / 2 - grow / 2 + sh / 2, top + sh, t + grow, bottom - top + grow, t).fill({ color: 0x000000, alpha: a });
+  const side = -spot.side;
   hoopLayer
     .roundRect(x - t / 2, top, t, bottom - top, t / 2)
-    .fill(0xf4f6fb)
-    .stroke({ width: 1.5, color: 0x8a93a6 });
+    .fill(0xc9d0de)
+    .stroke({ width: 1.5, color: 0x5e6678 });
+  hoopLayer.roundRect(x + (side > 0 ? 0 : -t / 2) + 1, top + 2, t / 2 - 1, bottom - top - 4, t / 4).fill(0xf8faff);
+  hoopLayer.rect(x + side * (t / 4) - 0.75, top + t / 2, 1.5, (bottom - top) * 0.45).fill({ color: 0xffffff, alpha: 0.9 });
 }
 
 // ---- The court: wall, floor, frame and ramps (redrawn when the camera changes) --------------------
@@ -2484,6 +2641,11 @@ app.stage.addChildAt(standLabel, 1);
 /** The backboard's bracket, on the wall under the balls (drawBackboard). */
 const bracketLayer = new Graphics({ label: 'hoop-bracket' });
 app.stage.addChildAt(bracketLayer, 2);
+/** The balls' soft shadows on the floor, under the balls (drawShadows). */
+const shadowLayer = new Graphics({ label: 'ball-shadows' });
+app.stage.addChildAt(shadowLayer, 3);
+// Every ball (sprite or particle) shares one disc texture: redrawn once as a lit sphere.
+shadeBallTexture(renderer.root);
 // The renderer's walls (thin lines with end dots, the box's outline) look like a physics diagram:
 // the court draws them as a frame and wooden ramps instead.
 const plainWalls = renderer.root.children.find((c) => c.label === 'walls');
@@ -2501,25 +2663,10 @@ function drawCourt(): void {
     y0 = cam.toScreenY(box.max[1]),
     y1 = cam.toScreenY(box.min[1]);
   court.clear();
-  // The wall: bands darker upwards, and panels 2 m wide.
-  const bands = 10;
-  for (let i = 0; i < bands; i++) {
-    const f = i / (bands - 1);
-    const c = (Math.round(0x1a + 0x12 * f) << 16) | (Math.round(0x24 + 0x16 * f) << 8) | Math.round(0x3a + 0x1c * f);
-    const ya = y0 + ((y1 - y0) * i) / bands;
-    court.rect(x0, ya, x1 - x0, (y1 - y0) / bands + 1).fill(c);
-  }
-  for (let x = box.min[0] + 2; x < box.max[0] - 0.5; x += 2)
-    court.moveTo(cam.toScreenX(x), y0).lineTo(cam.toScreenX(x), y1).stroke({ width: 1, color: 0x3b4a6b, alpha: 0.6 });
-  // The floor under the box: hardwood boards, 0.35 m deep, with their seams.
+  // The wall (painted blocks lit from above) and the hardwood floor under the box, 0.35 m deep.
   const floor = Math.max(10, cam.toScreenLength(0.35));
-  court.rect(x0, y1, x1 - x0, floor).fill(0xc8904f);
-  court.rect(x0, y1, x1 - x0, 2).fill(0xe3b276);
-  for (let x = box.min[0] + 1.3; x < box.max[0]; x += 1.3)
-    court
-      .moveTo(cam.toScreenX(x), y1 + 2)
-      .lineTo(cam.toScreenX(x), y1 + floor)
-      .stroke({ width: 1, color: 0x9a6a35 });
+  drawWall(court, { x0, x1, y0, y1 }, Math.max(8, cam.toScreenLength(0.5)));
+  drawFloor(court, { x0, x1, y0, y1 }, floor, Math.max(20, cam.toScreenLength(1.3)));
   // The frame: dark steel round the box, a lighter inner edge.
   const w = Math.max(6, cam.toScreenLength(0.18));
   court.rect(x0 - w, y0 - w, x1 - x0 + 2 * w, w).fill(0x3a4252);
@@ -2557,6 +2704,31 @@ function drawCourt(): void {
 const seams = new Graphics({ label: 'basketball-seams' });
 app.stage.addChild(seams);
 
+/** Balls up to which each ball gets a glint and a shadow (beyond, a frame's extra shapes would cost too much). */
+const SHADED_MAX = 400;
+
+/** Draws each ball's glint (into `seams`) and its soft shadow on the floor (shadowLayer), at its drawn place. */
+function drawShading(alpha: number, world: PhysicsWorld): void {
+  shadowLayer.clear();
+  if (handles.balls.length > SHADED_MAX) return;
+  const cam = renderer.camera;
+  const c = world.components,
+    P = c.Position,
+    O = c.PreviousPosition;
+  const floorY = cam.toScreenY(layoutOf(TALL).box.min[1]);
+  for (const e of handles.balls) {
+    if (e === liftedShown) continue;
+    const s = slotOf(e);
+    const x = cam.toScreenX(O.x[s]! + (P.x[s]! - O.x[s]!) * alpha),
+      y = cam.toScreenY(O.y[s]! + (P.y[s]! - O.y[s]!) * alpha);
+    const r = cam.toScreenLength(c.Ball.radius[s]!);
+    const fade = fading.get(e);
+    const shown = fade ? Math.max(0, 1 - (world.time - fade.at) / FADE_SECONDS) : 1;
+    drawShadow(shadowLayer, x, floorY, r, floorY - (y + r));
+    drawGlint(seams, x, y, r, shown);
+  }
+}
+
 /** Draws each player's ball's seams (a black outline, two crossing seams and two curved ones) at its drawn place, turned with it. */
 function drawBasketballs(alpha: number, world: PhysicsWorld): void {
   const cam = renderer.camera;
@@ -2564,6 +2736,7 @@ function drawBasketballs(alpha: number, world: PhysicsWorld): void {
   const c = world.components,
     P = c.Position,
     O = c.PreviousPosition;
+  drawShading(alpha, world);
   const r = cam.toScreenLength(PLAYER_RADIUS);
   const w = Math.max(1, 0.09 * r);
   for (const e of basketballs) {
@@ -2844,7 +3017,9 @@ function drawCountdown(): void {
 
 // ---- The end of a round: a card with the points and what made them ------------------------------
 
-const endCard = createResultCard(app.stage, { label: 'end-card', bigSize: 56 });
+// On a phone the box is about 340 px wide: the big line ("263 points") in 42 px type keeps a margin
+// inside the card's sides (in 56 px it filled the card edge to edge).
+const endCard = createResultCard(app.stage, { label: 'end-card', bigSize: TALL ? 42 : 56 });
 
 /** Gap, CSS px, between the end card and the pause overlay's words moved off it. */
 const PAUSE_WORDS_GAP = 16;
