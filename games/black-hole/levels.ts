@@ -228,7 +228,7 @@ const WALL_FILL_GAP = 0.4;
  * across to it, then up through it); level 3 a zig-zag of small holes up the straight path (`zigzag`: weave
  * between them; horizons 0.35 to 0.45 m, so it asks no more of a slow player than levels 2 and 4
  * do: test/games/black-hole-curve.test.ts); level 4 four holes, one across the straight path up and one on each diagonal, small
- * (horizons 0.5 to 0.85 m: a hole's pull matches the thrust within sqrt(c^2 r / (2 a)) of its centre,
+ * (horizons 0.5 to 0.7 m, so it is no wall after level 3: a hole's pull matches the thrust within sqrt(c^2 r / (2 a)) of its centre,
  * which grows with r, so with level 1's 0.6 m holes grown to 1.1 m steering would lose to the pull on
  * level 4); level 5 a second hole across the path, the holes no bigger; from level 6 the holes
  * grow again step by step (to 1, 1.1, 1.2 m) and drift, slowly at first (0.35, then 0.6, 0.8 m/s),
@@ -278,7 +278,7 @@ export function levelSpec(level: number): LevelSpec {
     case 3:
       return spec(5, [0.35, 0.45], 0, 0, 0, Infinity, 0, false, [10, 12], true);
     case 4:
-      return spec(4, [0.5, 0.85], 0, 1, 0, Infinity);
+      return spec(4, [0.5, 0.7], 0, 1, 0, Infinity);
     case 5:
       return spec(4, [0.45, 0.85], 0, 2, 0, Infinity);
     case 6:
