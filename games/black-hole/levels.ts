@@ -342,6 +342,8 @@ export interface LevelRun {
   fallsAtStart: number;
   /** `time` when the current attempt began (the first thrust after the level's start, a fall or an exit), s. */
   attemptStart: number;
+  /** Attempts begun on the level (each first thrust after its start, a fall or an exit), integer >= 0. */
+  attempts: number;
   /**
    * The ship waits at the start, held at rest, until the player thrusts: set when a level begins and
    * after each fall or exit, so a hole's pull (or a hole drifting near) cannot take a life before the
@@ -367,6 +369,7 @@ export function startLevel(game: BlackHoleGame, level: number): LevelRun {
     summary: null,
     fallsAtStart: 0,
     attemptStart: 0,
+    attempts: 0,
     parked: true,
   };
   layLevel(game, run, level);
@@ -409,6 +412,7 @@ function layLevel(game: BlackHoleGame, run: LevelRun, level: number): void {
   run.spec = spec;
   run.time = 0;
   run.attemptStart = 0;
+  run.attempts = 0;
   run.fuelLeft = spec.fuel;
   run.fallsAtStart = game.falls;
   run.parked = true;
@@ -921,6 +925,7 @@ export function stepLevel(game: BlackHoleGame, run: LevelRun): BlackHoleEvent | 
     // A new attempt: its clock starts, and the message about the last one (a fall, an exit) goes.
     run.parked = false;
     run.attemptStart = run.time;
+    run.attempts++;
     game.message = levelMessage(run.spec);
   }
   const time = run.time + dt;

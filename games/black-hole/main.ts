@@ -922,7 +922,8 @@ function fitMessage(lines: readonly string[]): void {
 /**
  * The replay's clock, s of game time: in levels the replayed attempt's own clock (from its first
  * thrust, 0 while the ship waits on the pad; at a clear the time the level's summary gives), so the
- * waits a replay skips are not counted; in the classic game (no waits skipped) the steps played.
+ * waits a replay skips are not counted, shown after the attempt's number (`LevelRun.attempts`) so its
+ * going back to 0 at a new attempt reads as such; in the classic game (no waits skipped) the steps played.
  */
 function replayClock(): number {
   if (!replay.player) return 0;
@@ -954,7 +955,7 @@ function updateStatus(force = false): void {
         [`Score ${bh.score} (1 a hole)`, false],
         [`Holes ${bh.holes.length}`, true],
       ];
-  if (replay.player) parts.push([`▶ Replay ${replayClock().toFixed(1)} s`, false]);
+  if (replay.player) parts.push([`▶ Replay ${run ? `attempt ${Math.max(1, run.attempts)} · ` : ''}${replayClock().toFixed(1)} s`, false]);
   const n = parts.map(([p]) => p).join('|');
   if (force || n !== shownNumbers) {
     shownNumbers = n;
