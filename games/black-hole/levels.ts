@@ -26,7 +26,7 @@
  * nothing appears on the field while the ship waits.
  *
  * No level can be cleared without steering: a layout in which an arrow, or two arrows at right angles,
- * held from the start would reach the line, or (from level 4) a hold of ↑ of 0.5 to 3 s let go would
+ * held from the start would reach the line, or (from level 3) a hold of ↑ of 0.5 to 3 s let go would
  * (`heldThrustClears`), is drawn again, up to LAYOUT_TRIES times.
  * On levels of drifting holes the first hole across the straight path stays put (`LevelSpec.anchored`):
  * else a player could wait at the pad for the drift to open the way up and clear it with one hold of ↑
@@ -127,9 +127,10 @@ export interface LevelSpec {
 /**
  * How far a zig-zag's holes (`LevelSpec.zigzag`) sit to the side of the start's x, m on the default
  * field (scaled to other fields' climbs): near enough that the straight climb passes within their
- * pull's grip (holding up falls in), far enough apart (twice this across) for a ship to weave between.
+ * pull's grip, held or let go to coast (their horizons reach to within a few tenths of a metre of
+ * the straight path), far enough apart (twice this across) for a ship to weave between.
  */
-export const ZIGZAG_OFFSET = 1.2;
+export const ZIGZAG_OFFSET = 0.5;
 
 /**
  * Heights, m on the default field's 22 m climb (scaled to other fields'), between which a zig-zag's
@@ -462,15 +463,13 @@ const HELD_THRUSTS: readonly Thrust[] = ['up', 'up-left', 'up-right', 'left', 'r
 /**
  * The first thrust of an arrow, or of two arrows at right angles, that held from the start (the ship
  * at rest there, its engine idle) and never changed reaches the line within HELD_SECONDS before it
- * falls in or leaves the field (`heldFlight` says 'cleared'), else (from level 4: no practice, wall
- * or zig-zag) 'up' if ↑ held for one of SHORT_HOLDS and let go does (on a level of drifting holes,
+ * falls in or leaves the field (`heldFlight` says 'cleared'), else (from level 3: no practice or wall) 'up' if ↑ held for one of SHORT_HOLDS and let go does (on a level of drifting holes,
  * also after a wait at the pad of one of SHORT_HOLD_WAITS, every other hold); null if none does. The game itself is not changed.
  */
 export function heldThrustClears(game: BlackHoleGame, run: LevelRun): Thrust | null {
   for (const t of HELD_THRUSTS) if (heldFlight(game, run, t).end === 'cleared') return t;
-  // Short holds on the levels of holes laid across the path (4 on): the zig-zag's small holes let
-  // most short holds through on every layout, and levels 1 and 2 never do.
-  if (run.spec.zigzag || run.spec.gate > 0 || run.spec.practice) return null;
+  // Short holds from level 3 (the zig-zag) on: levels 1 and 2 never let one through.
+  if (run.spec.gate > 0 || run.spec.practice) return null;
   for (const hold of SHORT_HOLDS) if (heldFlight(game, run, 'up', undefined, hold).end === 'cleared') return 'up';
   if (run.spec.drift > 0)
     for (const wait of SHORT_HOLD_WAITS)
