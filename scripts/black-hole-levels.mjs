@@ -1,6 +1,6 @@
-// `node scripts/black-hole-levels.mjs [--levels 1-10] [--seeds 8] [--fields 32x24,20x30] [--tables held,pilot,route,simple] [--pilots TEXT]
+// `node scripts/black-hole-levels.mjs [--levels 1-10] [--seeds 8] [--fields 32x24,20x30] [--tables held,pilot,route,simple,twophase] [--pilots TEXT]
 // [--source games/black-hole]`: what black hole's levels ask of a player, level by level, on each field (the desktop's
-// 32 x 24 m and the upright phone's 20 x 30 m by default). Four tables:
+// 32 x 24 m and the upright phone's 20 x 30 m by default). Five tables:
 // - held: every arrow and every pair of arrows at right angles held from the start, never changed
 //   (up, the four diagonals, left, right, down), on every seed, until the line, a fall, an exit or
 //   20 s: how many of these clear (a level that needs no steering shows a count above 0);
@@ -18,7 +18,10 @@
 // - route: newcomers who fly by eye, not by the predicted path (`flyRoute`): a route kept some horizon
 //   radii clear of every hole, followed with a reaction lag; per level the seeds cleared, the falls
 //   and the share of tries that cleared (the difficulty curve as a newcomer meets it);
-// - simple: a sideways nudge of 0 to 2.4 s, then up: the share of such tries that clear.
+// - simple: a sideways nudge of 0 to 2.4 s, then up: the share of such tries that clear;
+// - twophase: blind two-phase inputs flown by the layout check's flight (levels.ts `phasedFlight`):
+//   ↑ with ← or → for TWO_PHASE_FIRST s, then ↑ alone TWO_PHASE_THEN s, then nothing (2 x 7 x 13
+//   inputs a layout): per level the inputs that clear, the least and most of a seed.
 // The game runs at its 60 Hz step, so game time is what a player's clock shows. `--source` plays
 // another copy of the game's levels.ts and rules.ts (a folder inside the repository, e.g. an older
 // version checked out under node_modules/, to print the tables before a change).
@@ -317,6 +320,30 @@ for (const [width, height] of fields) {
             (noRoute ? `, no route found on ${noRoute}` : ''),
         );
       }
+    }
+  }
+  if (tables.includes('twophase')) {
+    console.log('  two-phase blind inputs (a diagonal up, then up alone, then nothing): clears / inputs');
+    for (const level of levels) {
+      const counts = seedList.map((seed) => {
+        const { g, run } = newLevel(level, seed, width, height);
+        let n = 0;
+        for (const side of ['up-left', 'up-right'])
+          for (const first of m.TWO_PHASE_FIRST)
+            for (const then of m.TWO_PHASE_THEN)
+              if (
+                m.phasedFlight(g, run, [
+                  [side, first],
+                  ['up', then],
+                ]).end === 'cleared'
+              )
+                n++;
+        return n;
+      });
+      const of = 2 * m.TWO_PHASE_FIRST.length * m.TWO_PHASE_THEN.length;
+      console.log(
+        `    level ${level}: ${counts.reduce((a, b) => a + b, 0)}/${of * seeds}, a seed ${Math.min(...counts)} to ${Math.max(...counts)} of ${of}`,
+      );
     }
   }
   if (tables.includes('simple')) {

@@ -26,7 +26,7 @@
  * nothing appears on the field while the ship waits.
  *
  * No level can be cleared without steering: a layout in which an arrow, or two arrows at right angles,
- * held from the start would reach the line, or (from level 4) a hold of ↑ of 0.5 to 3 s let go would
+ * held from the start would reach the line, or (from level 3) a hold of ↑ of 0.5 to 3 s let go would
  * (`heldThrustClears`), is drawn again, up to LAYOUT_TRIES times.
  * On levels of drifting holes the first hole across the straight path stays put (`LevelSpec.anchored`):
  * else a player could wait at the pad for the drift to open the way up and clear it with one hold of ↑
@@ -127,9 +127,10 @@ export interface LevelSpec {
 /**
  * How far a zig-zag's holes (`LevelSpec.zigzag`) sit to the side of the start's x, m on the default
  * field (scaled to other fields' climbs): near enough that the straight climb passes within their
- * pull's grip (holding up falls in), far enough apart (twice this across) for a ship to weave between.
+ * pull's grip, held or let go to coast (their horizons reach to within a few tenths of a metre of
+ * the straight path), far enough apart (twice this across) for a ship to weave between.
  */
-export const ZIGZAG_OFFSET = 1.2;
+export const ZIGZAG_OFFSET = 0.5;
 
 /**
  * Heights, m on the default field's 22 m climb (scaled to other fields'), between which a zig-zag's
@@ -228,7 +229,7 @@ const WALL_FILL_GAP = 0.4;
  * across to it, then up through it); level 3 a zig-zag of small holes up the straight path (`zigzag`: weave
  * between them; horizons 0.35 to 0.45 m, so it asks no more of a slow player than levels 2 and 4
  * do: test/games/black-hole-curve.test.ts); level 4 four holes, one across the straight path up and one on each diagonal, small
- * (horizons 0.5 to 0.85 m: a hole's pull matches the thrust within sqrt(c^2 r / (2 a)) of its centre,
+ * (horizons 0.5 to 0.7 m, so it is no wall after level 3: a hole's pull matches the thrust within sqrt(c^2 r / (2 a)) of its centre,
  * which grows with r, so with level 1's 0.6 m holes grown to 1.1 m steering would lose to the pull on
  * level 4); level 5 a second hole across the path, the holes no bigger; from level 6 the holes
  * grow again step by step (to 1, 1.1, 1.2 m) and drift, slowly at first (0.35, then 0.6, 0.8 m/s),
@@ -278,7 +279,7 @@ export function levelSpec(level: number): LevelSpec {
     case 3:
       return spec(5, [0.35, 0.45], 0, 0, 0, Infinity, 0, false, [10, 12], true);
     case 4:
-      return spec(4, [0.5, 0.85], 0, 1, 0, Infinity);
+      return spec(4, [0.5, 0.7], 0, 1, 0, Infinity);
     case 5:
       return spec(4, [0.45, 0.85], 0, 2, 0, Infinity);
     case 6:
@@ -342,6 +343,8 @@ export interface LevelRun {
   fallsAtStart: number;
   /** `time` when the current attempt began (the first thrust after the level's start, a fall or an exit), s. */
   attemptStart: number;
+  /** Attempts begun on the level (each first thrust after its start, a fall or an exit), integer >= 0. */
+  attempts: number;
   /**
    * The ship waits at the start, held at rest, until the player thrusts: set when a level begins and
    * after each fall or exit, so a hole's pull (or a hole drifting near) cannot take a life before the
@@ -353,7 +356,8 @@ export interface LevelRun {
 /**
  * Lays out level `level` in `game` (holes per `levelSpec`, the ship at the start, the fuel full) and
  * returns its run, not waiting. The layout comes from the game's seeded generator, rewound first
- * (./rules.ts `rewindLayouts`): the same seed and level always give the same layout.
+ * (./rules.ts `rewindLayouts`; from OWN_STREAM_FROM on, reset to the level's own `levelSeed`): the
+ * same seed and level always give the same layout.
  * @throws RangeError on a bad level.
  */
 export function startLevel(game: BlackHoleGame, level: number): LevelRun {
@@ -366,6 +370,7 @@ export function startLevel(game: BlackHoleGame, level: number): LevelRun {
     summary: null,
     fallsAtStart: 0,
     attemptStart: 0,
+    attempts: 0,
     parked: true,
   };
   layLevel(game, run, level);
@@ -408,6 +413,7 @@ function layLevel(game: BlackHoleGame, run: LevelRun, level: number): void {
   run.spec = spec;
   run.time = 0;
   run.attemptStart = 0;
+  run.attempts = 0;
   run.fuelLeft = spec.fuel;
   run.fallsAtStart = game.falls;
   run.parked = true;
@@ -416,12 +422,33 @@ function layLevel(game: BlackHoleGame, run: LevelRun, level: number): void {
   // retry): a level continued after a game over, or started with ?level=N, has the layout it had
   // when reached from level 1, so a player learning it finds it unchanged.
   rewindLayouts(game);
+  // From level 4 on each level draws from a stream of its own (`levelSeed`), so two levels of the
+  // same kind do not open with their holes in the same places.
+  if (level >= OWN_STREAM_FROM) game.rng.reset(levelSeed(game.params.seed, level));
   // Drawn again while a thrust held from the start would clear it (the last draw stays if all do).
   for (let tries = 1; ; tries++) {
     layHoles(game, run, spec);
     if (tries >= LAYOUT_TRIES || heldThrustClears(game, run) === null) break;
   }
   game.message = levelMessage(spec);
+}
+
+/** The first level whose layouts come from a stream of their own (`levelSeed`); levels before it keep the game's. */
+export const OWN_STREAM_FROM = 4;
+
+/**
+ * The seed of level `level`'s layout stream in a game of seed `seed` (truncated to 32 bits): the two
+ * mixed by a multiply and MurmurHash3's 32-bit finalizer (Appleby), so neighbouring levels and seeds
+ * start far apart in the generator's sequence. An unsigned 32-bit integer.
+ * @throws RangeError unless level is an integer >= 1 and seed finite.
+ */
+export function levelSeed(seed: number, level: number): number {
+  if (!(Number.isInteger(level) && level >= 1)) throw new RangeError(`levelSeed: level must be an integer >= 1, got ${level}`);
+  if (!Number.isFinite(seed)) throw new RangeError(`levelSeed: seed must be finite, got ${seed}`);
+  let z = (seed >>> 0) ^ Math.imul(level, 0x9e3779b1);
+  z = Math.imul(z ^ (z >>> 16), 0x85ebca6b);
+  z = Math.imul(z ^ (z >>> 13), 0xc2b2ae35);
+  return (z ^ (z >>> 16)) >>> 0;
 }
 
 /** Most layouts of a level drawn in search of one that no held thrust clears (`heldThrustClears`). */
@@ -436,25 +463,43 @@ const HELD_THRUSTS: readonly Thrust[] = ['up', 'up-left', 'up-right', 'left', 'r
 /**
  * The first thrust of an arrow, or of two arrows at right angles, that held from the start (the ship
  * at rest there, its engine idle) and never changed reaches the line within HELD_SECONDS before it
- * falls in or leaves the field (`heldFlight` says 'cleared'), else (from level 4: no practice, wall
- * or zig-zag) 'up' if ↑ held for one of SHORT_HOLDS and let go does; null if none does. The game
- * itself is not changed.
+ * falls in or leaves the field (`heldFlight` says 'cleared'), else (from level 3: no practice or wall) 'up' if ↑ held for one of SHORT_HOLDS and let go does (on a level of drifting holes,
+ * also after a wait at the pad of one of SHORT_HOLD_WAITS, every other hold); null if none does. The game itself is not changed.
  */
 export function heldThrustClears(game: BlackHoleGame, run: LevelRun): Thrust | null {
   for (const t of HELD_THRUSTS) if (heldFlight(game, run, t).end === 'cleared') return t;
-  // Short holds on the levels of holes laid across the path (4 on): the zig-zag's small holes let
-  // most short holds through on every layout, and levels 1 and 2 never do.
-  if (run.spec.zigzag || run.spec.gate > 0 || run.spec.practice) return null;
+  // Short holds from level 3 (the zig-zag) on: levels 1 and 2 never let one through.
+  if (run.spec.gate > 0 || run.spec.practice) return null;
   for (const hold of SHORT_HOLDS) if (heldFlight(game, run, 'up', undefined, hold).end === 'cleared') return 'up';
+  if (run.spec.drift > 0)
+    for (const wait of SHORT_HOLD_WAITS)
+      for (let i = 0; i < SHORT_HOLDS.length; i += 2)
+        if (phasedFlight(game, run, [['up', SHORT_HOLDS[i]!]], undefined, wait).end === 'cleared') return 'up';
   return null;
 }
 
 /**
- * Lengths of a hold of ↑ from the start then let go, s, that the layout check (`heldThrustClears`)
- * also flies: a hold of 0.5 to 3 s and a coast, bent round a blocker by the holes' pull, cleared
- * some layouts that no thrust held throughout clears.
+ * Two-phase blind inputs (`phasedFlight`): ↑ with ← or → held one of TWO_PHASE_FIRST s, the side let
+ * go, ↑ held one of TWO_PHASE_THEN s more, then nothing: a step past the hole across the path, then a
+ * climb. The diagonal's holds, s: 0.2 to 0.8 by 0.1.
  */
-const SHORT_HOLDS: readonly number[] = Object.freeze(Array.from({ length: 11 }, (_, i) => 0.5 + 0.25 * i));
+export const TWO_PHASE_FIRST: readonly number[] = Object.freeze(Array.from({ length: 7 }, (_, i) => 0.2 + 0.1 * i));
+
+/** The climb's holds after the diagonal, s: 0.3 to 1.5 by 0.1. */
+export const TWO_PHASE_THEN: readonly number[] = Object.freeze(Array.from({ length: 13 }, (_, i) => 0.3 + 0.1 * i));
+
+/**
+ * Lengths of a hold of ↑ from the start then let go, s, that the layout check (`heldThrustClears`)
+ * also flies, 0.5 to 3 s by 0.05 s: a hold and a coast, bent round a blocker by the holes' pull,
+ * cleared some layouts that no thrust held throughout clears (some only within 0.1 s of one length).
+ */
+const SHORT_HOLDS: readonly number[] = Object.freeze(Array.from({ length: 51 }, (_, i) => 0.5 + 0.05 * i));
+
+/**
+ * Waits at the pad before a hold of SHORT_HOLDS (every other one: 0.1 s apart), s, on levels of
+ * drifting holes: a player can wait there for the drift to open the way up.
+ */
+const SHORT_HOLD_WAITS: readonly number[] = Object.freeze([2, 4, 6]);
 
 /** How a held flight (`heldFlight`) ended, after how many steps, and where the ship was then (m). */
 export interface HeldFlight {
@@ -492,6 +537,28 @@ export interface HeldFlight {
  */
 export function heldFlight(game: BlackHoleGame, run: LevelRun, thrust: Thrust, path?: Float64Array, hold = Infinity): HeldFlight {
   if (!(hold > 0)) throw new RangeError(`heldFlight: hold must be > 0 s, got ${hold}`);
+  return phasedFlight(game, run, [[thrust, hold]], path);
+}
+
+/**
+ * A flight like `heldFlight`'s in phases: each [thrust, s] of `phases` held for round(s / dt) steps
+ * after the one before (s > 0; Infinity only in the last), then nothing held; a phase that presses a
+ * side the one before did not press kicks the ship that way (./rules.ts `stepBlackHole`). The first
+ * phase's downward part is dropped as the pad drops it (`padThrust`). E.g. [['up-left', 0.4], ['up',
+ * 0.6]]: ↑ and ← held 0.4 s, ← let go, ↑ held 0.6 s more, then the ship coasts. `wait`, s (>= 0):
+ * the holes drift that long first, as they do while the ship waits parked at the start for a press.
+ * @throws RangeError unless phases is not empty and each hold > 0, and as `heldFlight` does.
+ */
+export function phasedFlight(
+  game: BlackHoleGame,
+  run: LevelRun,
+  phases: ReadonlyArray<readonly [Thrust, number]>,
+  path?: Float64Array,
+  wait = 0,
+): HeldFlight {
+  if (phases.length === 0 || !phases.every(([, s]) => s > 0))
+    throw new RangeError(`phasedFlight: phases must hold thrusts for > 0 s each, got ${JSON.stringify(phases)}`);
+  if (!(wait >= 0 && Number.isFinite(wait))) throw new RangeError(`phasedFlight: wait must be finite and >= 0 s, got ${wait}`);
   const world = game.world;
   if (world.integrator !== 'semi-implicit-euler' || world.substeps !== 1)
     throw new RangeError(
@@ -512,15 +579,25 @@ export function heldFlight(game: BlackHoleGame, run: LevelRun, thrust: Thrust, p
     reach[i] = game.holeRadius[i]! + SHIP_RADIUS;
   }
   const vxHoles = run.holeVx.slice();
-  const dt = world.dt,
-    a = game.params.thrust,
+  const dt = world.dt;
+  // The holes drift while the ship waits parked at the start.
+  for (let k = Math.round(wait / dt); k > 0; k--)
+    for (let i = 0; i < n; i++) hx[i] = driftedX(hx[i]!, i, game.holeRadius[i]!, vxHoles, game.field.width, dt);
+  const a = game.params.thrust,
     sideRamp = game.params.sideRamp,
     wall = game.params.softWall,
     sideSpeed = game.params.sideSpeed,
-    held = game.over ? 'none' : padThrust(thrust),
-    d = THRUST_DIRECTION[held];
-  const tx = a * game.params.sideScale * d[0],
-    ty = a * d[1];
+    held = game.over ? 'none' : padThrust(phases[0]![0]);
+  // Each phase's thrust (m/s^2) and the step it ends after.
+  const tx: number[] = [],
+    ty: number[] = [],
+    ends: number[] = [];
+  for (const [t, s] of phases) {
+    const dir = THRUST_DIRECTION[tx.length === 0 ? held : game.over ? 'none' : t];
+    tx.push(a * game.params.sideScale * dir[0]);
+    ty.push(a * dir[1]);
+    ends.push((ends.at(-1) ?? 0) + Math.round(s / dt));
+  }
   const engine: [number, number] = [0, 0];
   const width = game.field.width,
     lineY = game.lineY;
@@ -529,9 +606,10 @@ export function heldFlight(game: BlackHoleGame, run: LevelRun, thrust: Thrust, p
     y = game.start[1],
     vx = 0,
     vy = 0;
-  const steps = HELD_SECONDS / dt,
-    release = Math.round(hold / dt);
-  let k = 0;
+  const steps = HELD_SECONDS / dt;
+  let k = 0,
+    phase = 0,
+    side = 0;
   if (held === 'none') {
     // No thrust left once the pad takes its downward part: the ship stays parked (`stepLevel`).
     for (; k < steps; k++)
@@ -541,9 +619,18 @@ export function heldFlight(game: BlackHoleGame, run: LevelRun, thrust: Thrust, p
       }
     return { end: 'timeout', steps: k, x, y };
   }
-  // A side arrow's press kicks the ship sideways at once (./rules.ts `stepBlackHole`, SIDE_TAP_KICK).
-  if (d[0] !== 0 && game.params.sideKick > 0) vx = Math.sign(d[0]) * Math.min(game.params.sideKick, sideSpeed);
   while (k < steps) {
+    while (phase < ends.length && k >= ends[phase]!) phase++;
+    const on = phase < ends.length,
+      px = on ? tx[phase]! : 0,
+      py = on ? ty[phase]! : 0;
+    // A side arrow's press kicks the ship sideways at once (./rules.ts `stepBlackHole`, SIDE_TAP_KICK).
+    const pressed = Math.sign(px);
+    if (pressed !== 0 && pressed !== side && game.params.sideKick > 0) {
+      const kicked = Math.min(pressed * vx + game.params.sideKick, sideSpeed);
+      if (kicked > pressed * vx) vx = pressed * kicked;
+    }
+    side = pressed;
     for (let i = 0; i < n; i++) hx[i] = driftedX(hx[i]!, i, game.holeRadius[i]!, vxHoles, width, dt);
     // The forces stage: the holes' pull, then the engine.
     let fx = 0,
@@ -557,10 +644,9 @@ export function heldFlight(game: BlackHoleGame, run: LevelRun, thrust: Thrust, p
       fx = fx + f * dx;
       fy = fy + f * dy;
     }
-    if (k < release) rampThrust(engine, tx, ty, a, dt, sideRamp);
-    else rampThrust(engine, 0, 0, a, dt, sideRamp);
+    rampThrust(engine, px, py, a, dt, sideRamp);
     if (engine[0] !== 0 || engine[1] !== 0) {
-      fx = fx + SHIP_MASS * engine[0] * sideThrustShare(engine[0], vx, ty === 0 ? sideSpeed : Infinity);
+      fx = fx + SHIP_MASS * engine[0] * sideThrustShare(engine[0], vx, py === 0 ? sideSpeed : Infinity);
       fy = fy + SHIP_MASS * engine[1];
     }
     const push = softWallPush(x, vx, engine[0], width, wall);
@@ -838,6 +924,7 @@ export function stepLevel(game: BlackHoleGame, run: LevelRun): BlackHoleEvent | 
     // A new attempt: its clock starts, and the message about the last one (a fall, an exit) goes.
     run.parked = false;
     run.attemptStart = run.time;
+    run.attempts++;
     game.message = levelMessage(run.spec);
   }
   const time = run.time + dt;

@@ -922,7 +922,8 @@ function fitMessage(lines: readonly string[]): void {
 /**
  * The replay's clock, s of game time: in levels the replayed attempt's own clock (from its first
  * thrust, 0 while the ship waits on the pad; at a clear the time the level's summary gives), so the
- * waits a replay skips are not counted; in the classic game (no waits skipped) the steps played.
+ * waits a replay skips are not counted, shown after the attempt's number (`LevelRun.attempts`) so its
+ * going back to 0 at a new attempt reads as such; in the classic game (no waits skipped) the steps played.
  */
 function replayClock(): number {
   if (!replay.player) return 0;
@@ -954,7 +955,7 @@ function updateStatus(force = false): void {
         [`Score ${bh.score} (1 a hole)`, false],
         [`Holes ${bh.holes.length}`, true],
       ];
-  if (replay.player) parts.push([`▶ Replay ${replayClock().toFixed(1)} s`, false]);
+  if (replay.player) parts.push([`▶ Replay ${run ? `attempt ${Math.max(1, run.attempts)} · ` : ''}${replayClock().toFixed(1)} s`, false]);
   const n = parts.map(([p]) => p).join('|');
   if (force || n !== shownNumbers) {
     shownNumbers = n;
@@ -1455,15 +1456,15 @@ const deathText = new Text({
   text: '',
   style: {
     fill: FALL_WORDS,
-    fontSize: 34,
+    fontSize: 22,
     fontFamily: 'sans-serif',
     fontWeight: 'bold',
-    stroke: { color: 0x000000, width: 6 },
+    stroke: { color: 0x000000, width: 4 },
     align: 'center',
-    lineHeight: 40,
+    lineHeight: 26,
   },
 });
-deathText.anchor.set(0.5);
+deathText.anchor.set(0.5, 0);
 deathText.visible = false;
 app.stage.addChild(deathText);
 
@@ -1509,8 +1510,8 @@ const deathWaits = (): boolean =>
 
 /**
  * Draws a fall's effect for its age: the field flashes red (fading over DEATH_FLASH_MS), the scene
- * shakes (DEATH_SHAKE_PX, dying away over DEATH_SHAKE_MS) and the words show in the middle of the
- * field (fading out at the end of DEATH_TEXT_MS).
+ * shakes (DEATH_SHAKE_PX, dying away over DEATH_SHAKE_MS) and the words show in the field's top band
+ * (fading out at the end of DEATH_TEXT_MS).
  */
 function drawDeath(): void {
   const cam = renderer.camera;
@@ -1535,19 +1536,29 @@ function drawDeath(): void {
   // hidden, `drawFrame`), in place of how to fly on.
   const text = shell.paused ? pausedWords(waitText, pause.text) : waitText;
   if (deathText.text !== text) deathText.text = text;
-  // As large as fits the field's width (on a phone a line at 1/12 of it ran past both edges).
+  // At most DEATH_WORDS_PX, smaller where the field's width asks it (a phone's).
   const room = cam.toScreenLength(playField.width) - 16;
   if (deathFit !== `${room}:${text}`) {
     deathFit = `${room}:${text}`;
-    let size = Math.max(24, Math.min(40, room / 12));
+    let size = Math.max(14, Math.min(DEATH_WORDS_PX, room / 16));
     deathText.style.fontSize = size;
     if (deathText.width > room) size = Math.max(12, Math.floor((size * room) / deathText.width));
     deathText.style.fontSize = size;
     deathText.style.lineHeight = 1.2 * size;
   }
   deathText.alpha = waits || age < DEATH_TEXT_MS - 400 ? 1 : (DEATH_TEXT_MS - age) / 400;
-  deathText.position.set(cam.toScreenX(playField.width / 2), cam.toScreenY(playField.height / 2));
+  // In the top band, from just under the field's top edge down across the line: no hole lies within
+  // 3 m under the line, so the words cover neither the holes nor the path up from the start. Under
+  // the touch card while it shows (`placeTouchHint` puts it there too).
+  let top = cam.toScreenY(playField.height) + 6;
+  const card = document.querySelector<HTMLElement>('[data-hud="touch-hint"]');
+  if (card && card.offsetParent !== null && !card.classList.contains('bp-gone'))
+    top = Math.max(top, card.getBoundingClientRect().bottom - app.canvas.getBoundingClientRect().top + 4);
+  deathText.position.set(cam.toScreenX(playField.width / 2), top);
 }
+
+/** The largest the words of a fall or a loss are drawn, px. */
+const DEATH_WORDS_PX = 22;
 
 /** Whether the path drawn in the last frame was the one holding ↑ from the pad would take (the ship parked, no thrust). */
 let padPath = false;
