@@ -1235,7 +1235,16 @@ describe('black hole, a stranger on a phone (issue 34)', () => {
         requestAnimationFrame(each);
       });
       await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: [at] });
-      await p.page.waitForTimeout(ms);
+      // Held for `ms` of game time (60 steps a second), not of the wall clock: on a loaded machine a
+      // second of the wall clock carried less game time, and the ship flew less far.
+      await p.waitFor(
+        (n) => {
+          const w = window.game as unknown as Phone;
+          return w.bh.world.steps - (window as unknown as { track: { steps: number } }).track.steps >= n;
+        },
+        Math.round((ms / 1000) * 60),
+        60_000,
+      );
       await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
       // 7 s of game time after the press, however slow the machine: long enough to reach the wall and turn.
       await p.waitFor(
