@@ -303,19 +303,16 @@ async function diveOnPhone(g: GamePage): Promise<void> {
     seen.touchAt = undefined;
     addEventListener('pointerdown', () => (seen.touchAt ??= w.world.time), { capture: true, once: true });
   });
-  // A touch the page has not seen within 3 s is lifted and put down again (on a loaded CI machine
-  // one touch in a run once never reached the page); the dive is timed from the one it saw.
-  let seen: number | null = null;
-  for (let attempt = 0; attempt < 3 && seen === null; attempt++) {
-    if (attempt > 0) await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
-    await cdp.send('Input.dispatchTouchEvent', {
-      type: 'touchStart',
-      touchPoints: [{ x: stick.x + stick.width / 2, y: stick.y + stick.height - 14, id: 1 }],
-    });
-    seen = await g.waitFor(() => (window as unknown as { touchAt?: number }).touchAt ?? null, null, 3000).catch(() => null);
-  }
-  if (seen === null) throw new Error('diveOnPhone: the page never saw the touch on the stick');
-  const t0 = seen;
+  await cdp.send('Input.dispatchTouchEvent', {
+    type: 'touchStart',
+    touchPoints: [{ x: stick.x + stick.width / 2, y: stick.y + stick.height - 14, id: 1 }],
+  });
+  // The game time the touch was seen at, wrapped: a run whose clock waits for the first input sees
+  // it at 0 (a bare 0 read as "not yet", and the wait ran out).
+  const { at: t0 } = await g.waitFor(() => {
+    const at = (window as unknown as { touchAt?: number }).touchAt;
+    return at === undefined ? null : { at };
+  }, null);
   // Held until 3.5 s of game time have passed, the frames run at once.
   await g.runUntil((start) => (window.game as unknown as SubOnPhone).world.time > start + 3.5, t0, { seconds: FRAME_S });
   await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
