@@ -1283,6 +1283,8 @@ function scoresClean(t: { x: number; y: number; vx: number; vy: number; radius: 
     rise = t.vy * t.vy + 2 * g * (t.y - spot.y);
   if (g > 0 && rise < 0) return false;
   const seconds = g > 0 ? Math.min(FLIGHT_SECONDS, (t.vy + Math.sqrt(rise + 2 * g)) / g + 0.3) : FLIGHT_SECONDS;
+  // A throw aimed down hard (a finger pulled up from below) is 1 m under the rim before it starts.
+  if (!(seconds > 0)) return false;
   const path = arcOf(t, thrown, seconds, 0, 0, shell.world.dt);
   const o = hoopOpening(spot);
   // The last point is the first touch when the flight ended early: a crossing into it does not count.

@@ -24,6 +24,7 @@ import { BOX, SEGMENTS as RAMPS, SEGMENT_RADIUS } from '../../games/bouncing-bal
 import { type GamePage, Harness, START_TIMEOUT_MS } from './harness';
 import { decodePng } from './png';
 import { sharedPage } from './shared-page';
+import { touchPath } from './touch';
 
 /** The extras bouncing-balls puts on window.game (see games/bouncing-balls/main.ts). */
 interface BallsGame {
@@ -1462,6 +1463,22 @@ describe('bouncing balls: the hoop game', () => {
       await expect.poll(open).toBe('');
       await g.waitFor(() => !window.game!.paused || null, null);
       expect(g.errors).toEqual([]);
+    });
+
+    it('phone 390 x 844, touch: a finger pulled up from just above the heap aims a throw down, and the game runs on', async () => {
+      // A stranger's gesture: pressed just over the heap and pulled up, the throw aims down hard; the
+      // touch assist's check of it asked for a flight of negative length and stopped the game.
+      const g = page();
+      await touchPath(
+        g.page,
+        [0, 1, 2, 3, 4, 5, 6].map((i) => [197 + (15 * i) / 6, 559 - (126 * i) / 6] as [number, number]),
+        300,
+        () => g.frames(3),
+      );
+      await g.frames(3);
+      expect(g.errors).toEqual([]);
+      expect(await g.page.evaluate(() => document.querySelector('.bp-error')?.textContent ?? '')).toBe('');
+      await g.page.evaluate(() => (window.game as unknown as { reset(): void }).reset());
     });
   });
 });
