@@ -1944,6 +1944,12 @@ const AIM_BOUNCES = 2;
 /** An aiming arc that ends on a ball less than this far from the throw's start, m, is labelled blocked. */
 const BLOCKED_SOON_M = 1.5;
 
+/**
+ * How far, degrees, the way an aiming arc meets a ball near its start may be from straight at that
+ * ball's centre for the throw to be blocked (arcCut); a throw meeting it more sideways glances off.
+ */
+const HEAD_ON_DEG = 60;
+
 /** How close to a thing the end of an aiming arc is for the arc to have been cut by it, m (past the ball's and the thing's radii). */
 const CUT_REACH = 0.05;
 
@@ -1952,8 +1958,8 @@ const CUT_REACH = 0.05;
  * ball in its way), 'ramp' (one of the layout's inclined walls), 'board' (the hoop's backboard, its
  * face or top: a shot that often banks in, so not a block), 'rim' (the hoop's front rim) or 'net'
  * (the hoop's net, from below or the side); null when it runs its length or ends
- * at the box. `soon`: a ball in the way within BLOCKED_SOON_M of the throw's start (a throw into its
- * neighbour in the heap; releasing it throws nothing: release).
+ * at the box. `soon`: a ball in the way within BLOCKED_SOON_M of the throw's start, met nearly head-on
+ * (HEAD_ON_DEG; a throw into its neighbour in the heap; releasing it throws nothing: release).
  */
 function arcCut(
   t: { x: number; y: number; radius: number },
@@ -1964,9 +1970,19 @@ function arcCut(
   if (n < 2) return null;
   const ex = path[2 * n - 2]!,
     ey = path[2 * n - 1]!;
-  const soon = Math.hypot(ex - t.x, ey - t.y) < BLOCKED_SOON_M;
-  if (nearBalls(t.x, t.y, thrown).some(([bx, by, br]) => Math.hypot(ex - bx, ey - by) < t.radius + br + 0.02))
-    return { kind: 'ball', x: ex, y: ey, soon };
+  const near = Math.hypot(ex - t.x, ey - t.y) < BLOCKED_SOON_M;
+  // The arc's way at its end (its last stretch), for how squarely it meets the ball there.
+  const wx = ex - path[2 * n - 4]!,
+    wy = ey - path[2 * n - 3]!,
+    wl = Math.hypot(wx, wy) || 1;
+  for (const [bx, by, br] of nearBalls(t.x, t.y, thrown)) {
+    const d = Math.hypot(ex - bx, ey - by);
+    if (d >= t.radius + br + 0.02) continue;
+    // Blocked only when it drives into that ball (within HEAD_ON_DEG of straight at its centre): a
+    // throw grazing a neighbour's top on its way up glances off it and flies on ("hits a ball").
+    const headOn = ((bx - ex) * wx + (by - ey) * wy) / ((d || 1) * wl) > Math.cos((HEAD_ON_DEG * Math.PI) / 180);
+    return { kind: 'ball', x: ex, y: ey, soon: near && headOn };
+  }
   for (const [ax, ay, bx, by] of layoutOf(TALL).segments)
     if (distanceToSegment(ex, ey, ax, ay, bx, by) < t.radius + SEGMENT_RADIUS + CUT_REACH)
       return { kind: 'ramp', x: ex, y: ey, soon: false };

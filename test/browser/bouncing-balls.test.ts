@@ -1950,6 +1950,47 @@ describe('bouncing balls: cancelling, full-power pulls and the end of a round mi
     await g.close();
   });
 
+  it('desktop 1280 x 800, mouse: a steep throw that grazes the level ball beside it is not "blocked" (it glances off); one straight into it is', async () => {
+    const g = await h.openGame('bouncing-balls', { viewport: { width: 1280, height: 800 }, query: { count: 8 } });
+    type PickGame = AimGame & HeapThrows & { spawn(x: number, y: number): number; aimCut(): { kind: string; words: string } | null };
+    // C and D side by side on the floor, touching, alone in the box, the world paused.
+    const pair = await g.page.evaluate(() => {
+      const game = window.game as unknown as PickGame;
+      game.paused = true;
+      for (const id of game.ballIds()) game.remove(id);
+      const c = game.spawn(5, 1);
+      const d = game.spawn(5, 1);
+      const R = game.world.components.Ball.radius;
+      game.world.components.Position.x[d % 2 ** 25] = 5 + R[c % 2 ** 25]! + R[d % 2 ** 25]!;
+      return { c, d };
+    });
+    expect(pair.c).toBeGreaterThan(0);
+    const on = await g.worldToPage(5, 1);
+    const m = g.page.mouse;
+    // Pressed on C, pulled 40 px left and 110 px down: thrown up and right about 70 degrees over the
+    // level, its arc meets D's upper left side at once, some 70 degrees off straight at D's centre
+    // (main.ts HEAD_ON_DEG 60): "hits a ball" by its cross, no "blocked" (before, it was blocked).
+    await m.move(on.x, on.y);
+    await m.down();
+    await m.move(on.x - 40, on.y + 110, { steps: 6 });
+    await g.waitFor(() => (window.game as unknown as AimGame).aimPath().length >= 2, null);
+    await g.frames(2);
+    const steep = await g.page.evaluate(() => ({
+      label: (window.game as unknown as PickGame).aimLabel(),
+      cut: (window.game as unknown as PickGame).aimCut(),
+    }));
+    expect(steep.cut?.kind).toBe('ball');
+    expect(steep.cut?.words).toBe('hits a ball');
+    expect(steep.label).not.toMatch(/blocked/);
+    // Pulled straight left instead: thrown straight into D, blocked.
+    await m.move(on.x - 80, on.y, { steps: 6 });
+    await g.waitFor(() => /^blocked · /.test((window.game as unknown as AimGame).aimLabel()), null);
+    await m.move(on.x, on.y, { steps: 4 });
+    await m.up();
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
   it('a heap ball that goes in is given back: a ball of its size comes in at the side away from the hoop, so the heap keeps its count', async () => {
     const g = await h.openGame('bouncing-balls', { viewport: { width: 1280, height: 800 }, query: { count: 8 } });
     type FeedGame = HeapThrows & { spawn(x: number, y: number): number; remove(id: number): void };
