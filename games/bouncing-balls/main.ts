@@ -480,6 +480,15 @@ function leaveFreely(world: PhysicsWorld): void {
  * its arc and its throw both start where it is lifted to.
  */
 function buried(e: number): boolean {
+  return someNeighbour(e, false, (_dx, dy, d, sum) => dy > 0.15 * sum && d < sum + 0.03);
+}
+
+/**
+ * Whether another ball of the scene than `e` (not one in flight when `resting`) passes `test`, given
+ * its centre's offset from e's, (dx, dy), m, their distance, m, and their radii's sum, m: the one scan
+ * of e's neighbours that buried and freeUp both make.
+ */
+function someNeighbour(e: number, resting: boolean, test: (dx: number, dy: number, d: number, sum: number) => boolean): boolean {
   const c = shell.world.components,
     P = c.Position,
     R = c.Ball.radius,
@@ -487,12 +496,11 @@ function buried(e: number): boolean {
   const x = P.x[s]!,
     y = P.y[s]!;
   for (const o of handles.balls) {
-    if (o === e) continue;
+    if (o === e || (resting && flights.has(o))) continue;
     const q = slotOf(o);
     const dx = P.x[q]! - x,
-      dy = P.y[q]! - y,
-      d = Math.hypot(dx, dy);
-    if (dy > 0.15 * (R[s]! + R[q]!) && d < R[s]! + R[q]! + 0.03) return true;
+      dy = P.y[q]! - y;
+    if (test(dx, dy, Math.hypot(dx, dy), R[s]! + R[q]!)) return true;
   }
   return false;
 }
@@ -1445,32 +1453,18 @@ function columnTop(x: number, floor: readonly [number, number]): number {
  * that side would drive into it, "blocked") and none lies in the column straight over it.
  */
 function freeUp(e: number): boolean {
-  const c = shell.world.components,
-    P = c.Position,
-    R = c.Ball.radius,
-    s = slotOf(e);
-  const x = P.x[s]!,
-    y = P.y[s]!;
-  for (const o of handles.balls) {
-    if (o === e || flights.has(o)) continue;
-    const q = slotOf(o);
-    const dx = P.x[q]! - x,
-      dy = P.y[q]! - y,
-      sum = R[s]! + R[q]!;
-    if (dy <= 0) continue;
-    if (Math.hypot(dx, dy) < sum + 0.03 || Math.abs(dx) < 0.8 * sum) return false;
-  }
-  return true;
+  return !someNeighbour(e, true, (dx, dy, d, sum) => dy > 0 && (d < sum + 0.03 || Math.abs(dx) < 0.8 * sum));
 }
 
 /** How far sideways of a press a ball with a free way up may be and still be the one it throws, m. */
 const FREE_PICK_REACH = 0.9;
 
 /**
- * The ball a press at (x, y), m, throws when the ball under it (`under`, 0 for none) has no free way
- * up (freeUp): the free ball nearest the press within FREE_PICK_REACH of its edge (under the floor,
- * `stand`: by sideways distance alone, the heap's free top near that x); `under` itself when it is
- * free, buried (then it is lifted, liftSpot) or no free ball is near. Resting balls only.
+ * The ball a press at (x, y), m, throws when the ball under it (`under`, 0 for none: a press over or
+ * beside the heap) has no free way up (freeUp): the free ball nearest the press within
+ * FREE_PICK_REACH of its edge (under the floor, `stand`: by sideways distance alone, the heap's free
+ * top near that x); `under` itself when it is free, buried (then it is lifted, liftSpot) or no free
+ * ball is near (0 then: a new basketball). Resting balls only.
  */
 function pickFree(under: number, x: number, y: number, stand: boolean): number {
   if (under !== 0 && (freeUp(under) || (!stand && buried(under)))) return under;
@@ -1491,6 +1485,62 @@ function pickFree(under: number, x: number, y: number, stand: boolean): number {
     }
   }
   return best;
+}
+
+/**
+ * The ball a new basketball started at (x, y), m, would overlap (the one whose edge is nearest it), or
+ * 0: a press there throws that ball (pickFree), not a new basketball pushed out of the heap at once.
+ */
+function overlapped(x: number, y: number): number {
+  const c = shell.world.components;
+  let best = 0,
+    bestGap = 0;
+  for (const e of handles.balls) {
+    if (flights.has(e) || fading.has(e)) continue;
+    const s = slotOf(e);
+    const gap = Math.hypot(c.Position.x[s]! - x, c.Position.y[s]! - y) - c.Ball.radius[s]! - PLAYER_RADIUS;
+    if (gap < bestGap) {
+      best = e;
+      bestGap = gap;
+    }
+  }
+  return best;
+}
+
+/** Whether the current press's ball was picked for it (pickFree, repickFree: the press was not on that ball), so another may be picked as the pull goes on. */
+let pressPicked = false;
+
+/**
+ * A pull of a ball picked for the press (pressPicked) that its arc shows blocked at once
+ * (blockedAtOnce): the pull goes to the next resting ball within FREE_PICK_REACH of the press
+ * (nearest first; not one buried with no room over it) whose throw with the same pull is not
+ * blocked; it stays when there is none. The player did not choose the ball: on top of the heap two
+ * balls side by side at one height block each other's throw toward the hoop, and "blocked" showed
+ * there where the throw looked fine, while the neighbour flies. A ball pressed on is the player's
+ * choice and stays.
+ */
+function repickFree(): void {
+  if (pressBall === 0 || !blockedAtOnce(currentThrow(), pressBall)) return;
+  const c = shell.world.components,
+    P = c.Position,
+    V = c.Velocity,
+    R = c.Ball.radius;
+  const [x, y] = pressAt;
+  const near: [number, number][] = [];
+  for (const e of handles.balls) {
+    if (e === pressBall || flights.has(e) || fading.has(e)) continue;
+    const s = slotOf(e);
+    if (V.x[s]! ** 2 + V.y[s]! ** 2 > COLUMN_REST_SPEED ** 2) continue;
+    const gap = (pressStand ? Math.abs(P.x[s]! - x) : Math.hypot(P.x[s]! - x, P.y[s]! - y)) - R[s]!;
+    if (gap < FREE_PICK_REACH && liftSpot(e) !== null) near.push([gap, e]);
+  }
+  near.sort((a, b) => a[0] - b[0]);
+  const was = pressBall;
+  for (const [, e] of near) {
+    pressBall = e;
+    if (!blockedAtOnce(currentThrow(), e)) return;
+  }
+  pressBall = was;
 }
 
 /** Whether the current press began under the box's floor (on the court's stand): it throws the ball over it (columnTop); a tap there does nothing. */
@@ -1515,8 +1565,10 @@ canvas.addEventListener('pointerdown', (event) => {
     box.min[1] + PLAYER_RADIUS + START_CLEARANCE,
   ];
   // A ball with a neighbour over it would be "blocked": the free ball nearest the press is taken instead.
-  const under = stand ? columnTop(wx, floor) : ballUnder(wx, wy);
-  const onBall = under !== 0 ? pickFree(under, wx, wy, stand) : 0;
+  // A press just over or beside the heap (no ball under it) takes the free ball nearest it too, so a
+  // new basketball starts only in open space, clear of the heap (one there read as coming from nowhere).
+  const under = stand ? columnTop(wx, floor) : ballUnder(wx, wy) || overlapped(wx, wy);
+  const onBall = under !== 0 || !stand ? pickFree(under, wx, wy, stand) : 0;
   const spot = onBall !== 0 ? null : startSpot(...(stand ? floor : ([wx, wy] as const)));
   // Where no ball can start (a ramp's far side) and nothing to pick up: the press does nothing, seen or heard.
   if (onBall === 0 && spot === null && !bodyUnder(wx, wy)) return;
@@ -1530,6 +1582,8 @@ canvas.addEventListener('pointerdown', (event) => {
   lastY = startY;
   dragged = false;
   pressBall = onBall;
+  pressPicked = onBall !== 0 && onBall !== ballUnder(wx, wy);
+  boardSaid = false;
   slop = event.pointerType === 'touch' ? TOUCH_SLOP : CLICK_SLOP;
   pressFinger = event.pointerType === 'touch';
   fullPullNow = fullPull();
@@ -1629,9 +1683,11 @@ function release(event: PointerEvent, cancelled: boolean): void {
   } else if (ball !== 0 && handles.balls.includes(ball)) {
     // A buried ball with no room over it is not thrown (its pull said so: drawPointer).
     if (!throwBall(ball, t.vx, t.vy)) return;
+    if (boardSaid) boardTaught = true;
     released(t);
     if (last) lastCall.ball = ball;
   } else {
+    if (boardSaid) boardTaught = true;
     released(t);
     const e = shoot(t.x, t.y, t.vx, t.vy);
     if (last) lastCall.ball = e;
@@ -1888,6 +1944,12 @@ const AIM_BOUNCES = 2;
 /** An aiming arc that ends on a ball less than this far from the throw's start, m, is labelled blocked. */
 const BLOCKED_SOON_M = 1.5;
 
+/**
+ * How far, degrees, the way an aiming arc meets a ball near its start may be from straight at that
+ * ball's centre for the throw to be blocked (arcCut); a throw meeting it more sideways glances off.
+ */
+const HEAD_ON_DEG = 60;
+
 /** How close to a thing the end of an aiming arc is for the arc to have been cut by it, m (past the ball's and the thing's radii). */
 const CUT_REACH = 0.05;
 
@@ -1896,8 +1958,8 @@ const CUT_REACH = 0.05;
  * ball in its way), 'ramp' (one of the layout's inclined walls), 'board' (the hoop's backboard, its
  * face or top: a shot that often banks in, so not a block), 'rim' (the hoop's front rim) or 'net'
  * (the hoop's net, from below or the side); null when it runs its length or ends
- * at the box. `soon`: a ball in the way within BLOCKED_SOON_M of the throw's start (a throw into its
- * neighbour in the heap; releasing it throws nothing: release).
+ * at the box. `soon`: a ball in the way within BLOCKED_SOON_M of the throw's start, met nearly head-on
+ * (HEAD_ON_DEG; a throw into its neighbour in the heap; releasing it throws nothing: release).
  */
 function arcCut(
   t: { x: number; y: number; radius: number },
@@ -1908,9 +1970,19 @@ function arcCut(
   if (n < 2) return null;
   const ex = path[2 * n - 2]!,
     ey = path[2 * n - 1]!;
-  const soon = Math.hypot(ex - t.x, ey - t.y) < BLOCKED_SOON_M;
-  if (nearBalls(t.x, t.y, thrown).some(([bx, by, br]) => Math.hypot(ex - bx, ey - by) < t.radius + br + 0.02))
-    return { kind: 'ball', x: ex, y: ey, soon };
+  const near = Math.hypot(ex - t.x, ey - t.y) < BLOCKED_SOON_M;
+  // The arc's way at its end (its last stretch), for how squarely it meets the ball there.
+  const wx = ex - path[2 * n - 4]!,
+    wy = ey - path[2 * n - 3]!,
+    wl = Math.hypot(wx, wy) || 1;
+  for (const [bx, by, br] of nearBalls(t.x, t.y, thrown)) {
+    const d = Math.hypot(ex - bx, ey - by);
+    if (d >= t.radius + br + 0.02) continue;
+    // Blocked only when it drives into that ball (within HEAD_ON_DEG of straight at its centre): a
+    // throw grazing a neighbour's top on its way up glances off it and flies on ("hits a ball").
+    const headOn = ((bx - ex) * wx + (by - ey) * wy) / ((d || 1) * wl) > Math.cos((HEAD_ON_DEG * Math.PI) / 180);
+    return { kind: 'ball', x: ex, y: ey, soon: near && headOn };
+  }
   for (const [ax, ay, bx, by] of layoutOf(TALL).segments)
     if (distanceToSegment(ex, ey, ax, ay, bx, by) < t.radius + SEGMENT_RADIUS + CUT_REACH)
       return { kind: 'ramp', x: ex, y: ey, soon: false };
@@ -1936,6 +2008,18 @@ const CUT_WORDS = {
   rim: 'hits the hoop',
   net: 'hits the net',
 } as const;
+
+/** What the cut label says for the backboard until a throw shown so is let go (boardTaught): the rule, so a bank shot reads as a way in, not a miss. */
+const BOARD_RULE_WORDS = 'off the board · a bank shot still scores';
+/** Whether a throw has been let go with its arc cut by the backboard and BOARD_RULE_WORDS beside it (then the short words do). */
+let boardTaught = false;
+/** Whether the current press's arc showed BOARD_RULE_WORDS. */
+let boardSaid = false;
+
+/** The words beside an arc cut by `kind` (CUT_WORDS; the backboard's rule the first time: BOARD_RULE_WORDS). */
+function cutWords(kind: CutKind): string {
+  return kind === 'board' && !boardTaught ? BOARD_RULE_WORDS : CUT_WORDS[kind];
+}
 
 /** The cut label's colour: red for a block, pale blue for the backboard (a bank shot, often in). */
 const CUT_FILL = { block: 0xffb3b3, board: 0xbfe3ff } as const;
@@ -2149,6 +2233,7 @@ function drawPointer(): void {
     showHoldLabel('release here to cancel', startX, startY - cr - 8);
     return;
   }
+  if (pressPicked) repickFree();
   // A buried ball with no room over it: a red ring round it and why nothing will be thrown.
   const pressed = pressBall !== 0 && handles.balls.includes(pressBall) ? pressBall : 0;
   const lift = pressed !== 0 ? liftSpot(pressed) : null;
@@ -2283,7 +2368,7 @@ function drawPointer(): void {
     const points = BALL_POINTS[kindOf(pressed)];
     const lifted = lift !== null && (lift[0] !== P.x[slotOf(pressed)] || lift[1] !== P.y[slotOf(pressed)]);
     label = `${lifted ? 'lifted · ' : ''}${label} · ${points} ${points === 1 ? 'point' : 'points'}`;
-  }
+  } else label = `new ball · ${label} · ${BALL_POINTS.basketball} point`;
   // The arc is cut to AIM_SECONDS once the clock runs (after the first basket): said on the next
   // throws' labels until the second basket, so a shorter line reads as the game's rule, not a fault.
   if (round.phase !== 'ready' && round.score <= 1) label += `\naim line shortened: the clock runs`;
@@ -2313,7 +2398,9 @@ function drawPointer(): void {
         .stroke({ width: 4, color: 0xff4d4d, alpha: 0.95 });
     // Beside the cross, unless the main label says it (a ball in the way at once).
     if (!soon) {
-      if (cutLabel.text !== CUT_WORDS[cut.kind]) cutLabel.text = CUT_WORDS[cut.kind];
+      const words = cutWords(cut.kind);
+      if (words === BOARD_RULE_WORDS) boardSaid = true;
+      if (cutLabel.text !== words) cutLabel.text = words;
       const fill = cut.kind === 'board' ? CUT_FILL.board : CUT_FILL.block;
       if (cutLabel.style.fill !== fill) cutLabel.style.fill = fill;
       // Off the board, the label sits on the court's side of the mark, clear of the board drawn over it.
@@ -2351,17 +2438,36 @@ const CELEBRATE_SECONDS = 1.6;
 const PRAISE = ['Basket!', 'Again!', 'Hat trick!', 'On fire!'];
 
 /**
- * The word over a basket: a trick shot's or a swish's, else the gold ball's, else a streak's
- * multiplier, else PRAISE for the n-th basket; with the multiplier when above 1.
+ * The words over a basket: a trick shot's or a swish's, else the gold ball's, else a streak's, else
+ * PRAISE for the n-th basket; then how its points add up (pointsSum) when a bonus or the streak
+ * counted, e.g. "Swish! 2 + 1" for a heap ball's swish (its "+3" shows under it).
  */
 function praiseFor(b: { score: number; points: number; kind: BallKind; style: ShotStyle }): string {
   const mult = Math.round(b.points / (BALL_POINTS[b.kind] + SHOT_BONUS[b.style]));
-  const times = mult > 1 ? ` ×${mult}` : '';
-  if (b.style === 'trick') return `Trick shot!${times}`;
-  if (b.style === 'swish') return `Swish!${times}`;
-  if (b.kind === 'gold') return mult > 1 ? `Gold ×${mult}!` : 'Gold ball!';
-  if (mult > 1) return `Streak ×${mult}!`;
-  return PRAISE[Math.min(PRAISE.length, b.score) - 1]!;
+  const sum = pointsSum(b.kind, b.style, mult);
+  const word =
+    b.style === 'trick'
+      ? 'Trick shot!'
+      : b.style === 'swish'
+        ? 'Swish!'
+        : b.kind === 'gold'
+          ? 'Gold ball!'
+          : mult > 1
+            ? 'Streak!'
+            : PRAISE[Math.min(PRAISE.length, b.score) - 1]!;
+  return sum === '' ? word : `${word} ${sum}`;
+}
+
+/**
+ * How a basket's points add up, the one way every place says it: the ball's points, then its bonus
+ * as "+ 1" (a swish, SHOT_BONUS) or "+ 3" (a trick shot), in brackets times the streak's multiplier
+ * when that is over 1: "2 + 1", "(1 + 3) ×2", "2 ×3"; '' for a plain basket at ×1 (its points alone).
+ */
+function pointsSum(kind: BallKind, style: ShotStyle, mult: number): string {
+  const bonus = SHOT_BONUS[style];
+  const parts = bonus > 0 ? `${BALL_POINTS[kind]} + ${bonus}` : `${BALL_POINTS[kind]}`;
+  if (mult > 1) return bonus > 0 ? `(${parts}) ×${mult}` : `${parts} ×${mult}`;
+  return bonus > 0 ? parts : '';
 }
 /**
  * The confetti of a basket: each piece's launch velocity (m/s, up from the rim, fanned 60 degrees
@@ -2899,7 +3005,7 @@ function updateStatus(): void {
       : lastCall.ball !== 0
         ? 'Last throw…'
         : cheering
-          ? `${praiseFor(lastBasket)} +${lastBasket.points} · ${lastBasket.score === 1 ? 'the clock runs' : `+${TIME_PER_BASKET} s`}${lastBasket.moved ? (hoopAt !== round.spot ? ' · the hoop moves next' : ' · the hoop moved') : ''}`
+          ? `${praiseFor(lastBasket)}${/\d$/.test(praiseFor(lastBasket)) ? ' =' : ''} +${lastBasket.points} · ${lastBasket.score === 1 ? 'the clock runs' : `+${TIME_PER_BASKET} s`}${lastBasket.moved ? (hoopAt !== round.spot ? ' · the hoop moves next' : ' · the hoop moved') : ''}`
           : round.phase === 'ready'
             ? `Score once to start the ${round.seconds} s clock`
             : round.streak > 0
@@ -3070,13 +3176,15 @@ function drawEndCard(over: boolean): void {
     round.bestStreak < 3
       ? 'Tip: baskets in a row multiply points'
       : round.tricks === 0
-        ? `Tip: a trick shot off a wall or a ramp scores +${SHOT_BONUS.trick}`
+        ? `Tip: a trick shot off a wall or a ramp adds +${SHOT_BONUS.trick}`
         : round.score < 6
           ? `Tip: the gold ball is worth ${BALL_POINTS.gold}`
           : `Tip: each basket after the first gives ${TIME_PER_BASKET} s back`;
   const bonus =
     round.swishes + round.tricks > 0
-      ? [`${plural(round.swishes, 'swish', 'swishes')} · ${plural(round.tricks, 'trick shot', 'trick shots')}`]
+      ? [
+          `${plural(round.swishes, 'swish', 'swishes')} (+${SHOT_BONUS.swish} each) · ${plural(round.tricks, 'trick shot', 'trick shots')} (+${SHOT_BONUS.trick} each)`,
+        ]
       : [];
   const room = cam.toScreenX(box.max[0]) - cam.toScreenX(box.min[0]) - 24;
   // Under the Play-again button at the box's top: the middle of the box's upper half.
@@ -3084,10 +3192,11 @@ function drawEndCard(over: boolean): void {
     {
       title: newBest ? 'Time! A new best' : 'Time!',
       big: plural(round.points, 'point', 'points'),
+      // The result first (against the best), then what made it, then a tip; Play again is under the card.
       lines: [
+        bestLine,
         `${plural(round.score, 'basket', 'baskets')} from ${plural(round.shots, 'throw', 'throws')}`,
         `Longest streak ${round.bestStreak}`,
-        bestLine,
         ...bonus,
         tip,
       ],
@@ -3177,7 +3286,7 @@ shell.expose({
   aimCut: (): { kind: string; x: number; y: number; words: string } | null => {
     const path = aimPath();
     const cut = path.length > 0 ? arcCut(currentThrow(), path, pressBall) : null;
-    return cut && { kind: cut.kind, x: cut.x, y: cut.y, words: cut.soon ? '' : CUT_WORDS[cut.kind] };
+    return cut && { kind: cut.kind, x: cut.x, y: cut.y, words: cut.soon ? '' : cutWords(cut.kind) };
   },
   /** Which of the status row's taking-turns hints shows (0-3): each TEACH_MS (6 s), held while a press is down. */
   hintTurn: (): number => teachTurn.turn,
