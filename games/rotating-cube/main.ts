@@ -17,8 +17,9 @@
  * it tumbles slowly in place, and with no torque L stays fixed while w moves whenever the body is not
  * spinning about a principal axis. Mode 'flip' spins a box with three distinct moments about its
  * intermediate axis on the pivot: it flips over again and again (the Dzhanibekov effect); the plot
- * shows w in the body frame. The challenge: 10 flips within 20 s (hold a yaw key to spin it up; a tap adds about 0.5 rad/s),
- * stars by the time taken (scene.ts FLIP_STAR_TIMES; none without the player's input).
+ * shows w in the body frame. The challenge: 10 flips within 20 s with the spin in FLIP_BAND; the pivot's
+ * drag (scene.ts FLIP_DRAG) slows it, so the player keeps it up with the yaw key (a tap adds about
+ * 1 rad/s) while it flips; stars by the time taken (scene.ts FLIP_STAR_TIMES; none without the player's input).
  * Keys: room: W A S D roll the cube away, left, towards the viewer, right; Q E turn it a quarter about the
  * vertical; pivot: W/S, A/D, Q/E torque about the camera's up, right and viewing axes (free spin: W/S
  * push ω's tip up/down on screen, A/D left/right, Q/E toward/away; flip: about right, up, view). X stops the
@@ -101,6 +102,7 @@ import {
   FACES,
   FLIP_BAND,
   FLIP_GOAL,
+  FLIP_PUSH,
   FLIP_STAR_TIMES,
   FLIP_TIME,
   FlipChallenge,
@@ -188,8 +190,8 @@ let bestMoves = Infinity,
 let omegaScale = 1;
 /**
  * Flip mode: how long a tap of a torque key torques, s of world time. At the default key torque
- * (0.5 N m) about the box's intermediate axis (0.34 kg m^2) it adds about 0.5 rad/s to its spin;
- * one frame's torque (1/60 s) added 0.02 rad/s, which the readout (0.1 rad/s) did not show.
+ * (0.5 N m, times FLIP_PUSH) about the box's intermediate axis (0.34 kg m^2) it adds about 1 rad/s to
+ * its spin; one frame's torque (1/60 s) added 0.05 rad/s, which the readout (0.1 rad/s) hardly showed.
  */
 const FLIP_TAP_TIME = 0.35;
 /** Flip mode: the world time, s, until which each tapped torque key still counts as held. */
@@ -1257,7 +1259,7 @@ function updateKeyTorque(): void {
     return;
   }
   rollAxis.fill(0);
-  const T = params.torque * push();
+  const T = params.torque * push() * (params.mode === 'flip' ? FLIP_PUSH : 1);
   if (params.mode === 'cube') {
     // The free-spin cube's inertia is the same about every axis, so a torque moves ω's tip along it:
     // D/A push the tip to the screen's right/left (±right), W/S up/down (±up), Q/E toward/away (±back).
