@@ -288,7 +288,13 @@ function cameraAxes(): [number[], number[]] {
 function createWorld(): PhysicsWorld {
   const world = createPhysicsWorld(rotatingCubeWorldOptions(params.mode));
   const heading = cameraHeading();
-  handles = buildRotatingCube(world, { mode: params.mode, spin: params.spin, heading });
+  // Flip mode: the pivot drags the box only while the round runs (it keeps its spin while the goal is read, and after the end).
+  handles = buildRotatingCube(world, {
+    mode: params.mode,
+    spin: params.spin,
+    heading,
+    dragWhile: () => flips.startedAt >= 0 && !flips.over(world),
+  });
   yawKeeper.reset(heading);
   const w = world.components.AngularVelocity,
     e = handles.body;

@@ -93,6 +93,11 @@ export interface RotatingCubeOptions {
   perturbation?: number;
   /** Flip mode: the pivot's drag, 1/s, finite and >= 0 (see FLIP_DRAG). Default FLIP_DRAG. */
   drag?: number;
+  /**
+   * Flip mode: the drag acts only in steps where this returns true (default: always). The game drags
+   * only while its round runs, so the box keeps its starting spin while the player reads the goal.
+   */
+  dragWhile?: () => boolean;
   /** Cube mode: the starting angular velocity, rad/s, world frame. Default (0.35, 0.8, 0.2). */
   tumble?: ArrayLike<number>;
   /**
@@ -158,7 +163,7 @@ export function buildRotatingCube(world: PhysicsWorld, options: RotatingCubeOpti
   });
   const pivot: [number, number, number] = [0, 0, 0];
   addSystem(world, 'constraints', holdAtPivot(body, pivot));
-  if (mode === 'flip' && drag > 0) addSystem(world, 'forces', flipDrag(world, body, drag));
+  if (mode === 'flip' && drag > 0) addSystem(world, 'forces', flipDrag(world, body, drag, options.dragWhile ?? (() => true)));
   return { body, mode, inertia, pivot, walls: [] };
 }
 
@@ -232,10 +237,11 @@ export const FLIP_DRAG = 0.1;
  */
 export const FLIP_PUSH = 2;
 
-/** A forces-stage system: the torque -drag L on `body` (flip mode's pivot drag, `FLIP_DRAG`). */
-function flipDrag(world: PhysicsWorld, body: number, drag: number): System {
+/** A forces-stage system: the torque -drag L on `body` (flip mode's pivot drag, `FLIP_DRAG`) in the steps where `on` returns true. */
+function flipDrag(world: PhysicsWorld, body: number, drag: number, on: () => boolean): System {
   const L = new Float64Array(3);
   return torqueCouple(body, () => {
+    if (!on()) return L.fill(0);
     spinAngularMomentum(world, body, L);
     for (let i = 0; i < 3; i++) L[i] = -drag * L[i]!;
     return L;

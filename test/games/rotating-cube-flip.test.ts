@@ -124,6 +124,16 @@ describe('rotating-cube flip round', () => {
       if (left < 0 && s < FLIP_BAND[0]) left = dw.time;
     }
     expect(Math.abs(left - Math.log(1.5) / FLIP_DRAG)).toBeLessThan(0.1);
+    // The game drags only while its round runs (`dragWhile`): before the first input the box keeps its spin.
+    let running = false;
+    const gw = createPhysicsWorld(rotatingCubeWorldOptions('flip'));
+    const gh = buildRotatingCube(gw, { mode: 'flip', spin: 6, dragWhile: () => running });
+    const spinOf = () => flipSpin(Math.hypot(...spinAngularMomentum(gw, gh.body, L)));
+    while (gw.time < 5) step(gw);
+    expect(Math.abs(spinOf() - 6)).toBeLessThan(0.01);
+    running = true;
+    while (gw.time < 6) step(gw);
+    expect(Math.abs(spinOf() - 6 * Math.exp(-FLIP_DRAG)) / 6).toBeLessThan(0.01);
   });
 
   it('one held key wins nothing: any key held from the first input for a tap to 3 s, or yaw held until the spin reaches any point of the band, then let go', () => {
