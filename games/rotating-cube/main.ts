@@ -1822,12 +1822,17 @@ function updateStatus(wx: number, wy: number, wz: number): void {
     const wonIn = flips.wonAt >= 0 ? flips.time(t) : Infinity;
     const [lo, hi] = FLIP_BAND;
     const inBand = spin >= lo && spin <= hi;
+    // On a phone the numbers line has no room for the band (it ends in an ellipsis past the width), so the hint names it.
     const band =
       spin < lo
-        ? `too slow: hold ${touch ? 'Yaw ▶' : 'D'} to spin it up`
+        ? touch
+          ? `too slow: hold Yaw ▶ to spin it up to ${lo}–${hi}`
+          : 'too slow: hold D to spin it up'
         : spin > hi
           ? `too fast: hold ${touch ? 'Yaw ◀' : 'A'} to brake`
-          : `in the band ✓ · a kick (${touch ? 'Pitch ▲ ▼' : 'W or S'}) makes it flip sooner`;
+          : touch
+            ? 'in the band ✓ · it slows: tap Yaw ▶ · Pitch ▲ ▼ flips it sooner'
+            : 'in the band ✓ · it slows down: tap D to keep it up · a kick (W or S) makes it flip sooner';
     status.set(
       over
         ? {
@@ -1842,11 +1847,13 @@ function updateStatus(wx: number, wy: number, wz: number): void {
             goal: touch
               ? `Flip the box over ${FLIP_GOAL} times in ${FLIP_TIME} s`
               : `Make the box flip over ${FLIP_GOAL} times in ${FLIP_TIME} s (★★★ within ${FLIP_STAR_TIMES[0]} s), spinning at ${lo} to ${hi} rad/s`,
-            numbers: `Flips ${n}/${FLIP_GOAL} · ${(FLIP_TIME - flips.time(t)).toFixed(1)} s left · spin ${spin.toFixed(1)}${touch ? ` of ${lo}–${hi}` : ''} ${inBand ? '✓' : '✗'}`,
+            numbers: `Flips ${n}/${FLIP_GOAL} · ${(FLIP_TIME - flips.time(t)).toFixed(1)} s${touch ? '' : ' left'} · spin ${spin.toFixed(1)} ${inBand ? '✓' : '✗'}`,
             hint:
               flips.startedAt < 0
                 ? `Clock starts at your first ${touch ? 'tap' : 'key'} · ${band}`
-                : `Flips count only in the band: ${band}`,
+                : touch
+                  ? band
+                  : `Flips count only in the band: ${band}`,
           },
       over && flips.wonAt >= 0,
     );
