@@ -1727,13 +1727,23 @@ function rollKey(d: number): string {
   return touch ? arrows[best[0]]! : best[0].toUpperCase();
 }
 /**
+ * Whether this page visit has won a pad that wants a face (the first such pad of the first round
+ * shows its way from the start, `routeHint`: a newcomer rolled WASD anywhere and slid onto it, which
+ * does not count, before the rule "slide beside it, roll on" clicked).
+ */
+let rolledOntoFacePad = false;
+/**
  * Room mode: once the moves on the lit pad (one that wants a face) pass its par by HINT_AFTER and the
  * cube rests, a shortest way on from there (scene.ts `padMoveRoute`) in keys ("slide to the ringed
- * tile, then D W W"), its first slide's tile ringed (`hintSpot`); else ''.
+ * tile, then D W W"), its first slide's tile ringed (`hintSpot`); on the visit's first pad that wants
+ * a face, the same from its first move ("How: click the ringed tile, then W"), until one is won; else ''.
  */
 function routeHint(): string {
   hintSpot = null;
-  if (pads.done || (layout.faces[pads.pad] ?? -1) < 0 || pads.padMoves < pads.padPar + HINT_AFTER) return '';
+  const firstFacePad = layout.faces.findIndex((f) => f >= 0);
+  if (pads.pad > firstFacePad && firstFacePad >= 0) rolledOntoFacePad = true;
+  const teach = !rolledOntoFacePad && pads.pad === firstFacePad;
+  if (pads.done || (layout.faces[pads.pad] ?? -1) < 0 || (!teach && pads.padMoves < pads.padPar + HINT_AFTER)) return '';
   const c = shell.world.components,
     e = handles.body;
   if (Math.hypot(c.Velocity.x[e]!, c.Velocity.y[e]!, c.Velocity.z[e]!) > 0.05) return '';
@@ -1748,6 +1758,8 @@ function routeHint(): string {
     if (!hintSpot) hintSpot = [spot[0] + m.to[0], spot[1] + m.to[1]];
     return `${touch ? 'tap' : 'click'} the ringed tile,`;
   });
+  // The first slide's words end in a comma: the rolls after it are what lands the face on top.
+  if (teach) return `How: ${words.join(' ').replace(/,$/, '').replace(/, /, ', then ')} to roll onto the pad`;
   return `Stuck? A shortest way from here: ${words.join(' ')}`;
 }
 
@@ -2468,6 +2480,8 @@ shell.expose({
     bedTiles: bedTiles.filter((t) => t.visible).length,
     chips: [...rulesChips.children].map((c) => (c as HTMLElement).dataset.face ?? ''),
   }),
+  /** The ring on the floor tile the status row's route starts with (its centre x, z, m), or null when none is drawn. */
+  hintRing: (): number[] | null => (hintRing.visible ? [hintRing.position.x, hintRing.position.z] : null),
   /** Whether the aim marker (the arrow from the cube and the ring where a push would stop it) is drawn. */
   aimShown: (): boolean => aimRing.visible,
   /**
