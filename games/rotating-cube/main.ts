@@ -1684,6 +1684,7 @@ function updateBanner(): void {
   const now = performance.now();
   const end = roundEnd(params.mode, { pads, spins, flips }, shell.world, bestMoves, {
     kick: touch ? 'the Pitch ▲ ▼ buttons' : 'W or S',
+    spinUp: touch ? 'Yaw ▶' : 'D',
     bestFlipTime,
   });
   if (!end) {

@@ -659,6 +659,9 @@ describe('rotating-cube round ends and the moves-to-go indicator', () => {
     const lost = roundEnd('flip', rounds, world)!;
     expect([lost.title, lost.won, lost.retry]).toEqual(['Time!', false, 'Try again']);
     expect(lost.big).toBe(`${starText(rounds.flips.stars())} ${rounds.flips.counter.count} flips`);
+    // The lost card says why and what to do: the spin sags with the pivot's drag, a tap of yaw keeps it up.
+    expect(lost.detail).toMatch(/8 to 12 rad\/s: it slows down, so tap D each time it sags$/);
+    expect(roundEnd('flip', rounds, world, Infinity, { spinUp: 'Yaw ▶' })!.detail).toMatch(/tap Yaw ▶ each/);
     // A won round's card names the page's kick control and the best time: the lower of this round's and the visit's before it.
     rounds.flips.wonAt = rounds.flips.startedAt + 8.5;
     const phone = roundEnd('flip', rounds, world, Infinity, { kick: 'the Pitch ▲ ▼ buttons', bestFlipTime: 7.2 })!;
