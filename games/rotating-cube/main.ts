@@ -888,8 +888,33 @@ function slidOnWords(): string {
   return `✗ Slides don't take this pad: roll onto it (${roll})`;
 }
 
-/** Celebrates the pads reached (chime, burst ring, pop) and the free-spin targets reached (chime, pop) since the last frame. */
+/** Flip mode: the flips counted and missed (out of the band) that `celebrateFlips` has answered; reset with the world. */
+let flipsAnswered = 0,
+  missesAnswered = 0;
+/**
+ * Flip mode: a flip counted since the last frame rings a chime a step higher each (a C major scale
+ * from C5) and pops "Flip 3 of 10 ✓"; a flip made out of the band pops why it did not count (the
+ * status row's ✗ alone was missed while watching the box). The last flip is left to the banner.
+ */
+function celebrateFlips(): void {
+  const { count, missed } = flips.counter;
+  if (count < flipsAnswered || missed < missesAnswered) [flipsAnswered, missesAnswered] = [0, 0];
+  if (count > flipsAnswered && count < FLIP_GOAL) {
+    const scale = [523, 587, 659, 698, 784, 880, 988, 1047, 1175];
+    sound.chime(scale[(count - 1) % scale.length]!, 0.3);
+    showPop(`Flip ${count} of ${FLIP_GOAL} ✓`, 700);
+  } else if (missed > missesAnswered && flips.startedAt >= 0 && !flips.over(shell.world)) {
+    const spin = flipSpin(Math.hypot(...spinAngularMomentum(shell.world, handles.body, new Float64Array(3))));
+    const [lo, hi] = FLIP_BAND;
+    showPop(`✗ Not counted: spin ${spin.toFixed(1)}, ${spin < lo ? `under ${lo}` : `over ${hi}`}`, 1100, '#ffb4a8');
+  }
+  flipsAnswered = count;
+  missesAnswered = missed;
+}
+
+/** Celebrates the pads reached (chime, burst ring, pop) and the free-spin targets reached (chime, pop) since the last frame; in flip mode the flips (`celebrateFlips`). */
 function celebrate(): void {
+  if (params.mode === 'flip') celebrateFlips();
   while (spinsReached.length > 0) {
     const k = spinsReached.shift()!;
     const last = k === SPIN_TARGETS - 1;
