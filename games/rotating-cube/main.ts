@@ -17,8 +17,9 @@
  * it tumbles slowly in place, and with no torque L stays fixed while w moves whenever the body is not
  * spinning about a principal axis. Mode 'flip' spins a box with three distinct moments about its
  * intermediate axis on the pivot: it flips over again and again (the Dzhanibekov effect); the plot
- * shows w in the body frame. The challenge: 10 flips within 20 s (hold a yaw key to spin it up; a tap adds about 0.5 rad/s),
- * stars by the time taken (scene.ts FLIP_STAR_TIMES; none without the player's input).
+ * shows w in the body frame. The challenge: 10 flips within 20 s with the spin in FLIP_BAND; the pivot's
+ * drag (scene.ts FLIP_DRAG) slows it, so the player keeps it up with the yaw key (a tap adds about
+ * 1 rad/s) while it flips; stars by the time taken (scene.ts FLIP_STAR_TIMES; none without the player's input).
  * Keys: room: W A S D roll the cube away, left, towards the viewer, right; Q E turn it a quarter about the
  * vertical; pivot: W/S, A/D, Q/E torque about the camera's up, right and viewing axes (free spin: W/S
  * push ω's tip up/down on screen, A/D left/right, Q/E toward/away; flip: about right, up, view). X stops the
@@ -101,6 +102,7 @@ import {
   FACES,
   FLIP_BAND,
   FLIP_GOAL,
+  FLIP_PUSH,
   FLIP_STAR_TIMES,
   FLIP_TIME,
   FlipChallenge,
@@ -188,8 +190,8 @@ let bestMoves = Infinity,
 let omegaScale = 1;
 /**
  * Flip mode: how long a tap of a torque key torques, s of world time. At the default key torque
- * (0.5 N m) about the box's intermediate axis (0.34 kg m^2) it adds about 0.5 rad/s to its spin;
- * one frame's torque (1/60 s) added 0.02 rad/s, which the readout (0.1 rad/s) did not show.
+ * (0.5 N m, times FLIP_PUSH) about the box's intermediate axis (0.34 kg m^2) it adds about 1 rad/s to
+ * its spin; one frame's torque (1/60 s) added 0.05 rad/s, which the readout (0.1 rad/s) hardly showed.
  */
 const FLIP_TAP_TIME = 0.35;
 /** Flip mode: the world time, s, until which each tapped torque key still counts as held. */
@@ -286,7 +288,13 @@ function cameraAxes(): [number[], number[]] {
 function createWorld(): PhysicsWorld {
   const world = createPhysicsWorld(rotatingCubeWorldOptions(params.mode));
   const heading = cameraHeading();
-  handles = buildRotatingCube(world, { mode: params.mode, spin: params.spin, heading });
+  // Flip mode: the pivot drags the box only while the round runs (it keeps its spin while the goal is read, and after the end).
+  handles = buildRotatingCube(world, {
+    mode: params.mode,
+    spin: params.spin,
+    heading,
+    dragWhile: () => flips.startedAt >= 0 && !flips.over(world),
+  });
   yawKeeper.reset(heading);
   const w = world.components.AngularVelocity,
     e = handles.body;
@@ -880,8 +888,33 @@ function slidOnWords(): string {
   return `✗ Slides don't take this pad: roll onto it (${roll})`;
 }
 
-/** Celebrates the pads reached (chime, burst ring, pop) and the free-spin targets reached (chime, pop) since the last frame. */
+/** Flip mode: the flips counted and missed (out of the band) that `celebrateFlips` has answered; reset with the world. */
+let flipsAnswered = 0,
+  missesAnswered = 0;
+/**
+ * Flip mode: a flip counted since the last frame rings a chime a step higher each (a C major scale
+ * from C5) and pops "Flip 3 of 10 ✓"; a flip made out of the band pops why it did not count (the
+ * status row's ✗ alone was missed while watching the box). The last flip is left to the banner.
+ */
+function celebrateFlips(): void {
+  const { count, missed } = flips.counter;
+  if (count < flipsAnswered || missed < missesAnswered) [flipsAnswered, missesAnswered] = [0, 0];
+  if (count > flipsAnswered && count < FLIP_GOAL) {
+    const scale = [523, 587, 659, 698, 784, 880, 988, 1047, 1175];
+    sound.chime(scale[(count - 1) % scale.length]!, 0.3);
+    showPop(`Flip ${count} of ${FLIP_GOAL} ✓`, 700);
+  } else if (missed > missesAnswered && flips.startedAt >= 0 && !flips.over(shell.world)) {
+    const spin = flipSpin(Math.hypot(...spinAngularMomentum(shell.world, handles.body, new Float64Array(3))));
+    const [lo, hi] = FLIP_BAND;
+    showPop(`✗ Not counted: spin ${spin.toFixed(1)}, ${spin < lo ? `under ${lo}` : `over ${hi}`}`, 1100, '#ffb4a8');
+  }
+  flipsAnswered = count;
+  missesAnswered = missed;
+}
+
+/** Celebrates the pads reached (chime, burst ring, pop) and the free-spin targets reached (chime, pop) since the last frame; in flip mode the flips (`celebrateFlips`). */
 function celebrate(): void {
+  if (params.mode === 'flip') celebrateFlips();
   while (spinsReached.length > 0) {
     const k = spinsReached.shift()!;
     const last = k === SPIN_TARGETS - 1;
@@ -1257,7 +1290,7 @@ function updateKeyTorque(): void {
     return;
   }
   rollAxis.fill(0);
-  const T = params.torque * push();
+  const T = params.torque * push() * (params.mode === 'flip' ? FLIP_PUSH : 1);
   if (params.mode === 'cube') {
     // The free-spin cube's inertia is the same about every axis, so a torque moves ω's tip along it:
     // D/A push the tip to the screen's right/left (±right), W/S up/down (±up), Q/E toward/away (±back).
@@ -1676,6 +1709,7 @@ function updateBanner(): void {
   const now = performance.now();
   const end = roundEnd(params.mode, { pads, spins, flips }, shell.world, bestMoves, {
     kick: touch ? 'the Pitch ▲ ▼ buttons' : 'W or S',
+    spinUp: touch ? 'Yaw ▶' : 'D',
     bestFlipTime,
   });
   if (!end) {
@@ -1719,13 +1753,23 @@ function rollKey(d: number): string {
   return touch ? arrows[best[0]]! : best[0].toUpperCase();
 }
 /**
+ * Whether this page visit has won a pad that wants a face (the first such pad of the first round
+ * shows its way from the start, `routeHint`: a newcomer rolled WASD anywhere and slid onto it, which
+ * does not count, before the rule "slide beside it, roll on" clicked).
+ */
+let rolledOntoFacePad = false;
+/**
  * Room mode: once the moves on the lit pad (one that wants a face) pass its par by HINT_AFTER and the
  * cube rests, a shortest way on from there (scene.ts `padMoveRoute`) in keys ("slide to the ringed
- * tile, then D W W"), its first slide's tile ringed (`hintSpot`); else ''.
+ * tile, then D W W"), its first slide's tile ringed (`hintSpot`); on the visit's first pad that wants
+ * a face, the same from its first move ("How: click the ringed tile, then W"), until one is won; else ''.
  */
 function routeHint(): string {
   hintSpot = null;
-  if (pads.done || (layout.faces[pads.pad] ?? -1) < 0 || pads.padMoves < pads.padPar + HINT_AFTER) return '';
+  const firstFacePad = layout.faces.findIndex((f) => f >= 0);
+  if (pads.pad > firstFacePad && firstFacePad >= 0) rolledOntoFacePad = true;
+  const teach = !rolledOntoFacePad && pads.pad === firstFacePad;
+  if (pads.done || (layout.faces[pads.pad] ?? -1) < 0 || (!teach && pads.padMoves < pads.padPar + HINT_AFTER)) return '';
   const c = shell.world.components,
     e = handles.body;
   if (Math.hypot(c.Velocity.x[e]!, c.Velocity.y[e]!, c.Velocity.z[e]!) > 0.05) return '';
@@ -1740,6 +1784,8 @@ function routeHint(): string {
     if (!hintSpot) hintSpot = [spot[0] + m.to[0], spot[1] + m.to[1]];
     return `${touch ? 'tap' : 'click'} the ringed tile,`;
   });
+  // The first slide's words end in a comma: the rolls after it are what lands the face on top.
+  if (teach) return `How: ${words.join(' ').replace(/,$/, '').replace(/, /, ', then ')} to roll onto the pad`;
   return `Stuck? A shortest way from here: ${words.join(' ')}`;
 }
 
@@ -1814,12 +1860,17 @@ function updateStatus(wx: number, wy: number, wz: number): void {
     const wonIn = flips.wonAt >= 0 ? flips.time(t) : Infinity;
     const [lo, hi] = FLIP_BAND;
     const inBand = spin >= lo && spin <= hi;
+    // On a phone the numbers line has no room for the band (it ends in an ellipsis past the width), so the hint names it.
     const band =
       spin < lo
-        ? `too slow: hold ${touch ? 'Yaw ▶' : 'D'} to spin it up`
+        ? touch
+          ? `too slow: hold Yaw ▶ to spin it up to ${lo}–${hi}`
+          : 'too slow: hold D to spin it up'
         : spin > hi
           ? `too fast: hold ${touch ? 'Yaw ◀' : 'A'} to brake`
-          : `in the band ✓ · a kick (${touch ? 'Pitch ▲ ▼' : 'W or S'}) makes it flip sooner`;
+          : touch
+            ? 'in the band ✓ · it slows: tap Yaw ▶ · Pitch ▲ ▼ flips it sooner'
+            : 'in the band ✓ · it slows down: tap D to keep it up · a kick (W or S) makes it flip sooner';
     status.set(
       over
         ? {
@@ -1834,11 +1885,13 @@ function updateStatus(wx: number, wy: number, wz: number): void {
             goal: touch
               ? `Flip the box over ${FLIP_GOAL} times in ${FLIP_TIME} s`
               : `Make the box flip over ${FLIP_GOAL} times in ${FLIP_TIME} s (★★★ within ${FLIP_STAR_TIMES[0]} s), spinning at ${lo} to ${hi} rad/s`,
-            numbers: `Flips ${n}/${FLIP_GOAL} · ${(FLIP_TIME - flips.time(t)).toFixed(1)} s left · spin ${spin.toFixed(1)}${touch ? ` of ${lo}–${hi}` : ''} ${inBand ? '✓' : '✗'}`,
+            numbers: `Flips ${n}/${FLIP_GOAL} · ${(FLIP_TIME - flips.time(t)).toFixed(1)} s${touch ? '' : ' left'} · spin ${spin.toFixed(1)} ${inBand ? '✓' : '✗'}`,
             hint:
               flips.startedAt < 0
                 ? `Clock starts at your first ${touch ? 'tap' : 'key'} · ${band}`
-                : `Flips count only in the band: ${band}`,
+                : touch
+                  ? band
+                  : `Flips count only in the band: ${band}`,
           },
       over && flips.wonAt >= 0,
     );
@@ -2453,6 +2506,8 @@ shell.expose({
     bedTiles: bedTiles.filter((t) => t.visible).length,
     chips: [...rulesChips.children].map((c) => (c as HTMLElement).dataset.face ?? ''),
   }),
+  /** The ring on the floor tile the status row's route starts with (its centre x, z, m), or null when none is drawn. */
+  hintRing: (): number[] | null => (hintRing.visible ? [hintRing.position.x, hintRing.position.z] : null),
   /** Whether the aim marker (the arrow from the cube and the ring where a push would stop it) is drawn. */
   aimShown: (): boolean => aimRing.visible,
   /**

@@ -41,6 +41,8 @@ export interface Rounds {
 export interface FlipEndWords {
   /** What kicks the box, as the player sees it ('W or S'; on a phone 'the Pitch ▲ ▼ buttons'). */
   kick?: string;
+  /** What spins the box up, as the player sees it ('D'; on a phone 'Yaw ▶'). */
+  spinUp?: string;
   /** The fastest FLIP_GOAL flips of this visit before this round, s (Infinity: none). */
   bestFlipTime?: number;
 }
@@ -93,7 +95,7 @@ export function roundEnd(
       : `${starText(flips.stars())} ${flips.counter.count} flips`,
     detail: won
       ? `${bestText}★★★ within ${FLIP_STAR_TIMES[0]} s, ★★ ${FLIP_STAR_TIMES[1]} s: a kick (${kick}) makes it flip sooner`
-      : `${bestText}flips count only while the spin stays ${FLIP_BAND[0]} to ${FLIP_BAND[1]} rad/s`,
+      : `${bestText}flips count only while the spin stays ${FLIP_BAND[0]} to ${FLIP_BAND[1]} rad/s: it slows down, so tap ${flipWords.spinUp ?? 'D'} each time it sags`,
     next: 'Back to the pads',
     retry: 'Try again',
     won,

@@ -560,6 +560,46 @@ describe('phone controls', () => {
     await g.close();
   });
 
+  it("rotating cube: the flip round's goal and numbers fit the phone's width, spin up to two digits; the hint names the band", async () => {
+    // The numbers line is one line on a phone, cut with an ellipsis where it is wider than the screen:
+    // "… · spin 6.0 of …" hid the band and the ✗ (the band now goes in the hint).
+    const g = await h.openGame('rotating-cube', { ...PHONE, query: { mode: 'flip' } });
+    type Line = { text: string; over: number };
+    const lines = () =>
+      g.page.evaluate(() =>
+        ['goal', 'numbers', 'hint'].map((part) => {
+          const el = document.querySelector<HTMLElement>(`[data-hud="challenge"] [data-hud="${part}"]`)!;
+          return { text: el.textContent ?? '', over: el.scrollWidth - el.clientWidth };
+        }),
+      ) as Promise<Line[]>;
+    const first = await g.waitFor(() => document.querySelector('[data-hud="challenge"] [data-hud="numbers"]')?.textContent || null, null);
+    let shown = await lines();
+    expect(shown.map((l) => l.over)).toEqual([0, 0, 0]);
+    expect(first).toMatch(/^Flips 0\/10 · 20\.0 s · spin 6\.0 ✗$/);
+    expect(shown[2]!.text).toMatch(/hold Yaw ▶ .*8–12/);
+    // The round started (a Yaw ▶ press) and the spin scaled to 11.5 rad/s: two digits.
+    await hold(g.page, 'turn right', 200);
+    await g.page.evaluate(() => {
+      const game = window.game as unknown as {
+        body(): number;
+        world: { components: { AngularVelocity: Record<'x' | 'y' | 'z', Float64Array> } };
+      };
+      const W = game.world.components.AngularVelocity;
+      const w = Math.hypot(W.x[game.body()]!, W.y[game.body()]!, W.z[game.body()]!);
+      for (const k of ['x', 'y', 'z'] as const) W[k][game.body()] = (W[k][game.body()]! * 11.5) / w;
+    });
+    shown = await g
+      .waitFor(() => {
+        const el = document.querySelector('[data-hud="challenge"] [data-hud="numbers"]');
+        return /spin 1\d\.\d/.test(el?.textContent ?? '') || null;
+      }, null)
+      .then(lines);
+    expect(shown[1]!.text).toMatch(/^Flips \d+\/10 · \d+\.\d s · spin 1\d\.\d [✓✗]$/);
+    expect(shown.map((l) => l.over)).toEqual([0, 0, 0]);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
   it('rotating cube: the pad goal is on screen; a plain tap on the cube picks the floor cell under it, a drag from it flicks it that way', async () => {
     // A fixed layout (?seed=11: the first pad at x = 1.5 m, z = 0.2 m), room to roll left: a random one may put the pad by a wall.
     const g = await h.openGame('rotating-cube', { ...PHONE, query: { seed: 11 } });

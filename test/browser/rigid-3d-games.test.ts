@@ -1028,6 +1028,57 @@ describe('3D rigid-body games in headless Chromium', () => {
     await g.close();
   }, 240_000);
 
+  it("rotating-cube (room), 1280 x 800: the visit's first pad that wants a face shows its way from the start (a ringed tile, then the roll); followed, it wins the pad; after that only a stuck player sees one", async () => {
+    // A newcomer rolled anywhere, then slid onto the pad (which does not count) before the rule "slide
+    // beside it, roll on" clicked: the first such pad now says how, with the tile to click ringed.
+    type Game = { challenge(): { pad: number; pads: number[][] }; hintRing(): number[] | null };
+    const g = await h.openGame('rotating-cube', { query: { seed: 11 }, viewport: { width: 1280, height: 800 }, readyTimeoutMs: 60_000 });
+    const hint = () => g.page.evaluate(() => document.querySelector('[data-hud="challenge"] [data-hud="hint"]')?.textContent ?? '');
+    await waitCubeAtRest(g);
+    const pads = (await cubeState(g)).pads as [number, number][];
+    // Pad 1 (any face) taken by hand; pad 2 of layout 11 wants blue.
+    await placeCube(g, pads[0]![0], pads[0]![1], 2);
+    await g.waitFor(() => (window.game as unknown as Game).challenge().pad === 1, null, 60_000);
+    await waitCubeAtRest(g);
+    const how = await g.waitFor(() => {
+      const text = document.querySelector('[data-hud="challenge"] [data-hud="hint"]')?.textContent ?? '';
+      return text.startsWith('How:') ? text : null;
+    }, null);
+    expect(how).toMatch(/^How: click the ringed tile, then ([WASD] ?)+ to roll onto the pad$/);
+    const ring = (await g.page.evaluate(() => (window.game as unknown as Game).hintRing()))!;
+    expect(ring).not.toBeNull();
+    // The ringed tile is a cell beside the pad (the puzzle's cells are 1 m squares centred on it).
+    expect(Math.hypot(ring[0]! - pads[1]![0], ring[1]! - pads[1]![1])).toBeLessThan(1.5);
+    // Followed: a click on the ring, then the keys it names, one roll at a time.
+    const at = await stillPageOf(g, ring[0]!, 0, ring[1]!);
+    await g.page.mouse.click(at.x, at.y);
+    await waitCubeMoved(g, pads[0]![0], pads[0]![1]);
+    await waitCubeAtRest(g);
+    for (const key of how
+      .replace(/^.*then /, '')
+      .replace(/ to roll.*$/, '')
+      .split(' ')) {
+      const face = await g.page.evaluate(() => (window.game as unknown as { challenge(): { face: number } }).challenge().face);
+      await g.page.keyboard.press(key.toLowerCase());
+      await g.waitFor((f) => (window.game as unknown as { challenge(): { face: number } }).challenge().face !== f, face, 60_000);
+      await waitCubeAtRest(g);
+    }
+    await g.waitFor(() => (window.game as unknown as Game).challenge().pad === 2, null, 60_000);
+    expect(await hint()).not.toMatch(/^How:/);
+    // The same pads again (R): the rule is known now, so pad 2 shows no way until the player is stuck.
+    await g.page.keyboard.press('r');
+    await g.waitFor(() => (window.game as unknown as Game).challenge().pad === 0, null);
+    await waitCubeAtRest(g);
+    await placeCube(g, pads[0]![0], pads[0]![1], 2);
+    await g.waitFor(() => (window.game as unknown as Game).challenge().pad === 1, null, 60_000);
+    await waitCubeAtRest(g);
+    await g.frames(5);
+    expect(await hint()).toMatch(/^ROLL onto the pad/);
+    expect(await g.page.evaluate(() => (window.game as unknown as Game).hintRing())).toBeNull();
+    expect(g.errors).toEqual([]);
+    await g.close();
+  }, 240_000);
+
   it('rotating-cube (room), 1280 x 800: a click on a pad ringed by ROLL tiles, or on a tile, leaves the cube where it is and says to roll onto it', async () => {
     type Game = { challenge(): { pad: number; moves: number; face: number }; pop(): { text: string; count: number } };
     const g = await h.openGame('rotating-cube', { query: { seed: 11 }, viewport: { width: 1280, height: 800 }, readyTimeoutMs: 60_000 });

@@ -683,6 +683,44 @@ describe('3D games in headless Chromium', () => {
     await g.close();
   });
 
+  it('rotating-cube: each flip counted pops its number; one made with the spin under the band pops why it did not count', async () => {
+    // The status row's count and ✗ alone were missed while watching the box turn over.
+    const g = await open('rotating-cube', { mode: 'flip' });
+    type Cube = ThreeGame & {
+      body(): number;
+      challenge(): { flips: number };
+      startClock(): void;
+      pop(): { text: string; count: number };
+      world: { components: { AngularVelocity: Record<'x' | 'y' | 'z', Float64Array> } };
+    };
+    // Paused, a fresh round spun at 10 rad/s (in the band) about the box's intermediate axis and tipped
+    // 0.5 rad/s off it, so it flips within a second or two; the pivot's drag takes it under 8 rad/s in
+    // about 2 s, after which its flips do not count. Steps in small batches, a frame between (the pops come with frames).
+    await g.page.evaluate(() => {
+      const game = window.game as unknown as Cube;
+      game.paused = true;
+      game.reset();
+      const W = game.world.components.AngularVelocity;
+      [W.x[game.body()], W.y[game.body()], W.z[game.body()]] = [0.5, 10, 0.5];
+      game.startClock();
+    });
+    const pops: string[] = [];
+    for (let batch = 0; batch < 120 && !pops.some((t) => t.startsWith('✗')); batch++) {
+      const p = await g.page.evaluate(() => {
+        const game = window.game as unknown as Cube;
+        for (let i = 0; i < 6; i++) game.step();
+        return game.pop();
+      });
+      await g.frames(1);
+      const after = await g.page.evaluate(() => (window.game as unknown as Cube).pop());
+      if (after.count > p.count) pops.push(after.text);
+    }
+    expect(pops[0]).toBe('Flip 1 of 10 ✓');
+    expect(pops.find((t) => t.startsWith('✗'))).toMatch(/^✗ Not counted: spin [67]\.\d, under 8$/);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
   it('rotating-cube: the flip challenge is lost left alone and holding D (it spins out of the band); the status row says so', async () => {
     const g = await open('rotating-cube', { mode: 'flip' });
     type Cube = ThreeGame & { challenge(): { flips: number; flipsWonAt: number }; startClock(): void };
