@@ -54,7 +54,7 @@ import {
   seabedBetween,
 } from './beacons';
 import { drawBoat, HEADLIGHT, inHeadlight } from './boat-drawing';
-import { currentAt, drawCurrent, driftInCurrent } from './current';
+import { CURRENT_NOTE_LIFE, CURRENT_NOTE_SPEED, currentAt, currentMark, currentNote, drawCurrent, driftInCurrent } from './current';
 import { coastDistance, createHelmState, HELM, type HelmInput, keyHeaveShare, NO_INPUT, steer } from './helm';
 import { LEVELS, levelCourse, MAX_BEACONS } from './levels';
 import {
@@ -866,6 +866,29 @@ glowNote.style.cssText =
   'box-sizing: border-box; padding: 5px 12px; border-radius: 10px; background: rgba(4, 16, 30, 0.82); color: #b8ffe9;' +
   `font: 600 ${compact ? 13 : 14}px/1.35 system-ui, sans-serif; text-align: center; pointer-events: none; display: none;`;
 pageLayout().stage.append(glowNote);
+/** The note over the bottom of the scene the first time the level's current pushes the boat (./current.ts currentNote). */
+const currentNoteEl = document.createElement('div');
+currentNoteEl.dataset.sceneOverlay = '';
+currentNoteEl.dataset.hud = 'current-note';
+currentNoteEl.style.cssText =
+  `position: absolute; z-index: 4; left: 10px; right: ${compact ? 90 : 70}px; bottom: 10px; width: fit-content; margin: 0 auto;` +
+  'box-sizing: border-box; padding: 5px 12px; border-radius: 10px; background: rgba(4, 16, 30, 0.82); color: #cfeeff;' +
+  `font: 600 ${compact ? 13 : 14}px/1.35 system-ui, sans-serif; text-align: center; pointer-events: none; display: none;`;
+pageLayout().stage.append(currentNoteEl);
+/** Game time the current's note came up, s (NaN until the current first pushes the boat under way; once a page). */
+const currentSeen = { shown: Number.NaN };
+/**
+ * Brings up the current's note at game time `t` (s) the first time the water at the hull, `u` m/s,
+ * runs at CURRENT_NOTE_SPEED or more once the run has started, and keeps it up CURRENT_NOTE_LIFE s.
+ */
+function showCurrentNote(t: number, u: number): void {
+  if (Number.isNaN(currentSeen.shown) && !state.over && Number.isFinite(state.startedAt) && Math.abs(u) >= CURRENT_NOTE_SPEED) {
+    currentSeen.shown = t;
+    currentNoteEl.textContent = currentNote(u);
+  }
+  const display = !state.over && t - currentSeen.shown < CURRENT_NOTE_LIFE ? 'block' : 'none';
+  if (currentNoteEl.style.display !== display) currentNoteEl.style.display = display;
+}
 /**
  * Shows the first-time hint from the moment a glow is first in view (`inView`) at game time `t`, s,
  * for GLOW_HINT_LIFE s, and at least GLOW_HINT_AFTER s after the first glow caught; once a page.
@@ -1786,10 +1809,14 @@ function declutter(H: number, hull: readonly number[]): void {
     if (aim.badge[2]! > 0) take('badge', aim.badge);
   }
   if (gaugeDepth?.visible) take('depth', boxOf(gaugeDepth));
-  if (glowNote.style.display !== 'none') {
+  for (const [name, note] of [
+    ['glow hint', glowNote],
+    ['current note', currentNoteEl],
+  ] as const) {
+    if (note.style.display === 'none') continue;
     const stage = app.canvas.getBoundingClientRect(),
-      b = glowNote.getBoundingClientRect();
-    take('glow hint', [b.left - stage.left, b.top - stage.top, b.width, b.height]);
+      b = note.getBoundingClientRect();
+    take(name, [b.left - stage.left, b.top - stage.top, b.width, b.height]);
   }
   // A text moved down (or up: `dir` -1) past every box it covers, inside the scene.
   const slide = (t: Text, dir: number) => {
@@ -2253,6 +2280,7 @@ function draw(): void {
     t,
     glows.some((gl, i) => glowState[i] === 0 && gl.x > left && gl.x < right && sy(gl.y) > 0 && sy(gl.y) < H),
   );
+  showCurrentNote(t, currentAt(params.level, hyw));
   drawMines(t, k, sx, sy, left, right, hxw, hyw, c.Angle.value[e]!);
   // Beacons: a lamp (at least 5 px, however far the camera zooms out) in a soft pulsing glow, inside
   // its one ring, the catch radius (BEACON_CATCH: any part of the hull inside it collects; the help
@@ -2800,9 +2828,12 @@ function draw(): void {
     `L${params.level}${compact ? '' : ' ·'} ◯ ${state.collected}/${taken.length}${missedText} · ${clock(state.time)}/${clock(state.par)}`;
   // The clock turns red once par has passed.
   goal.style.color = !state.over && state.time > state.par ? '#ff9e8a' : '#ffe066';
+  // The speed is over the ground (the hull's own velocity); the water's, where it flows, beside it
+  // ("current ◀2.4"), so a boat held back by the current is seen to be, not only felt.
+  const water = currentMark(currentAt(params.level, c.Position.y[e]!));
   readoutText.textContent = compact
-    ? `${Math.max(0, depth).toFixed(0)}${ordered.replace(/ /g, '')} m ${speedMark(c.Velocity.x[e]!)}${stopped ? ' · seabed' : ''} · ${state.score} · `
-    : `${Math.max(0, depth).toFixed(0)}${ordered} m${stopped} · ${speedWords(c.Velocity.x[e]!)} · ${state.score} pts${streak} · `;
+    ? `${Math.max(0, depth).toFixed(0)}${ordered.replace(/ /g, '')} m ${speedMark(c.Velocity.x[e]!)}${water ? ` ${water.replace('current ', '≋')}` : ''}${stopped ? ' · seabed' : ''} · ${state.score} · `
+    : `${Math.max(0, depth).toFixed(0)}${ordered} m${stopped} · ${speedWords(c.Velocity.x[e]!)}${water ? ` over ground, ${water}` : ''} · ${state.score} pts${streak} · `;
   showHull();
   seabedLine.textContent = `seabed ${(-floor).toFixed(0)} m`;
   physicsText.textContent = [

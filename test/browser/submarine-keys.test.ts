@@ -26,24 +26,24 @@ type Sub = {
 };
 
 /**
- * A fresh world with the boat hovering at 30 m (tanks at neutral, holding the depth), the game
+ * A fresh world with the boat hovering at height `y` (m; default 30 m down; tanks at neutral, holding the depth), the game
  * running and its animation loop stopped: no frame runs until the test runs them (`frames`), as
  * in a stall. Returns the hull's x, m.
  */
-function hover(page: Page): Promise<number> {
-  return page.evaluate(() => {
+function hover(page: Page, y = -30): Promise<number> {
+  return page.evaluate((y) => {
     const w = window.game as unknown as Sub;
     w.reset();
     w.paused = false;
     w.loop.stop();
     const c = w.world.components,
       e = w.hull();
-    c.Position.y[e] = -30;
+    c.Position.y[e] = y;
     c.Velocity.y[e] = 0;
     c.Ballast.fore[e] = c.Ballast.aft[e] = 0.7675;
-    Object.assign(w.state, { holdY: -30, mode: 'holding', fill: 0.7675 });
+    Object.assign(w.state, { holdY: y, mode: 'holding', fill: 0.7675 });
     return c.Position.x[e]!;
-  });
+  }, y);
 }
 
 /** Runs `seconds` of game time in frames of 1/60 s now, with `paused` set first; returns the hull's x (m) and velocity along x (m/s). */
@@ -109,6 +109,36 @@ describe('submarine keys (desktop)', () => {
     // presses differ by at most a step of 1/60 s at their ends (4 m/s x 1/60 s = 7 cm).
     expect(framed).toBeGreaterThan(1);
     expect(Math.abs(stalled - framed)).toBeLessThan(0.1);
+    expect(g.errors).toEqual([]);
+  });
+
+  it('on level 2 the current is told: a note the first time it pushes the boat, the status line names it beside the speed over the ground', async () => {
+    const read = () =>
+      g.page.evaluate(() => ({
+        status: document.querySelector('[data-hud="readout"]')?.textContent ?? '',
+        note: (document.querySelector('[data-hud="current-note"]') as HTMLElement | null)?.style.display === 'block',
+        noteText: document.querySelector('[data-hud="current-note"]')?.textContent ?? '',
+      }));
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as Sub & { params: { level: number } };
+      w.params.level = 2;
+    });
+    // 10 m down on level 2 the water runs at 1.5 sin(pi 10 / 35 + 0.6) = 1.5 m/s (./current.ts).
+    await hover(g.page, -10);
+    await frames(g.page, 1);
+    expect((await read()).note).toBe(false);
+    await g.page.keyboard.down('d');
+    await frames(g.page, 1);
+    await g.page.keyboard.up('d');
+    const told = await read();
+    expect(told.note).toBe(true);
+    expect(told.noteText).toMatch(/Current ▶ with you, 1\.5 m\/s/);
+    expect(told.status).toMatch(/ahead [\d.]+ m\/s over ground, current ▶1\.5/);
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as Sub & { params: { level: number } };
+      w.params.level = 1;
+      w.loop.start();
+    });
     expect(g.errors).toEqual([]);
   });
 
