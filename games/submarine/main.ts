@@ -787,12 +787,12 @@ const pointer = new Text({
 });
 pointer.anchor.set(0.5);
 app.stage.addChild(pointer);
-/** The banner over the scene when a beacon is collected ("Beacon 2 of 6"), fading out. */
+/** The banner at the top of the scene when a beacon is collected ("Beacon 2 of 6"), fading out. */
 const banner = new Text({
   text: '',
   style: {
     fill: 0xffe066,
-    fontSize: 30,
+    fontSize: 26,
     align: 'center',
     fontWeight: '800',
     fontFamily: 'system-ui, sans-serif',
@@ -1830,8 +1830,9 @@ function declutter(H: number, hull: readonly number[]): void {
     }
   };
   if (banner.visible) {
-    // On a phone the banner sits at the top of the scene with the other messages, under the hint.
-    if (compact) banner.y = 8 + banner.height / 2;
+    // The banner sits at the top of the scene with the other messages, under the hint, not over the
+    // sea ahead of the boat that the player steers into.
+    banner.y = 8 + banner.height / 2;
     slide(banner, 1);
     take('banner', boxOf(banner));
   }
@@ -2406,7 +2407,7 @@ function draw(): void {
     // A missed beacon's banner in the hits' red-orange, a collected one's in the beacons' yellow.
     banner.style.fill = newest.passed ? 0xff9e8a : 0xffe066;
     banner.x = W / 2;
-    banner.y = H * 0.28;
+    banner.y = 8 + banner.height / 2;
     banner.alpha = u < 0.7 ? 1 : (1 - u) / 0.3;
     banner.scale.set(u < 0.08 ? 0.6 + 0.4 * (u / 0.08) + 0.15 * Math.sin((Math.PI * u) / 0.08) : 1);
   }
