@@ -2957,8 +2957,8 @@ shell.expose({
   pauseOverlay: () => ({ visible: pause.visible, text: pause.text }),
   /** The end card's text ('' while the run goes on). */
   endText: (): string => (endCard.style.display === 'none' ? '' : (endCard.textContent ?? '')),
-  /** Sets the screw's throttle directly, in [-0.5, 1] (the helm sets the tanks and thrusters each step). */
+  /** Sets the screw's throttle directly, in [-HELM.asternShare, 1] (the helm sets the tanks and thrusters each step). */
   setControls: (controls: { throttle?: number }): void => {
-    if (controls.throttle !== undefined) state.throttle = Math.min(1, Math.max(-0.5, controls.throttle));
+    if (controls.throttle !== undefined) state.throttle = Math.min(1, Math.max(-HELM.asternShare, controls.throttle));
   },
 });

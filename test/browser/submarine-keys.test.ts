@@ -148,7 +148,7 @@ describe('submarine keys (desktop)', () => {
     const ahead = await frames(g.page, 1.5);
     expect(ahead.vx).toBeGreaterThan(3);
     await g.page.keyboard.down('a');
-    // Astern brakes the boat and backs it at up to half its top speed (./helm.ts: 4 m/s).
+    // Astern brakes the boat and backs it at up to HELM.asternShare of its top speed (./helm.ts: 6 m/s).
     const backing = await frames(g.page, 3);
     expect(backing.vx).toBeLessThan(-2);
     expect(await g.page.evaluate(() => (window.game as unknown as Sub).state.throttle)).toBeLessThan(-0.4);
