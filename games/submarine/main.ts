@@ -2431,7 +2431,7 @@ function draw(): void {
     wayMine = onWay ? onWay.index : -1;
     // A mine on the way is ringed where it is, and a mine on the boat's course is told by the hull
     // (drawMineWarning), where the player looks: the pointer at the screen's edge tells only the ridge.
-    pointer.text = beaconLabel(wx - hxw, wy - hyw, c.Angle.value[e]!, ridge, '', beaconName(aim.index));
+    pointer.text = beaconLabel(wx - hxw, wy - hyw, ridge, '', beaconName(aim.index));
     // Heading for the finish with beacons skipped: collecting it ends the run, so the label says
     // which are still to fetch (backing to them first keeps every beacon in reach).
     const behind = taken.flatMap((t, i) => (t || i === aim.index ? [] : [beaconName(i)]));

@@ -142,6 +142,30 @@ describe('submarine keys (desktop)', () => {
     expect(g.errors).toEqual([]);
   });
 
+  it("the target's label gives level figures: the boat pitched 17 degrees reads the beacon as far ahead and down as the plain differences", async () => {
+    // 20 m over beacon A's depth, 60 m short of it, nose down 0.3 rad: along the hull the beacon
+    // would read 60 cos 0.3 + 20 sin 0.3 = 63 m ahead; level, 60 m ahead and 20 m down.
+    await hover(g.page);
+    const read = await g.page.evaluate(() => {
+      const w = window.game as unknown as Sub & { handles(): { beacons: Float64Array }; beaconPointer(): { text: string } };
+      const c = w.world.components as Sub['world']['components'] & { Angle: { value: Float64Array } },
+        e = w.hull(),
+        b = w.handles().beacons;
+      c.Position.x[e] = b[0]! - 60;
+      c.Position.y[e] = b[1]! + 20;
+      c.Angle.value[e] = -0.3;
+      w.loop.runFrames(1, 1 / 60);
+      return { text: w.beaconPointer().text, dx: b[0]! - c.Position.x[e]!, dy: b[1]! - c.Position.y[e]!, angle: c.Angle.value[e]! };
+    });
+    expect(Math.abs(read.angle)).toBeGreaterThan(0.25);
+    const [, ahead, down] = read.text.match(/(\d+) m ahead, (\d+) m down/) ?? [];
+    // Within 1 m: the figures are rounded to the metre.
+    expect(Math.abs(Number(ahead) - read.dx)).toBeLessThanOrEqual(1);
+    expect(Math.abs(Number(down) + read.dy)).toBeLessThanOrEqual(1);
+    await g.page.evaluate(() => (window.game as unknown as Sub).loop.start());
+    expect(g.errors).toEqual([]);
+  });
+
   it('Astern pressed while Ahead is still held backs the boat; let go, Ahead drives it again', async () => {
     await hover(g.page);
     await g.page.keyboard.down('d');
