@@ -548,7 +548,11 @@ function stepWorld(world: PhysicsWorld): void {
   // The clock starts with the first control held, not when the page loads.
   const anyHeld = input.dive || input.rise || input.noseDown || input.noseUp || input.ahead || input.astern;
   if (Number.isNaN(state.startedAt) && anyHeld) state.startedAt = world.time;
+  const before = state.time;
   state.time = Number.isNaN(state.startedAt) ? 0 : world.time - state.startedAt;
+  // The clock passing par is told once, on the banner in the hits' red-orange: the par bonus is gone.
+  if (before <= state.par && state.time > state.par && state.par > 0)
+    pickups.push({ x: 0, y: 0, time: world.time, text: `Par ${clock(state.par)} passed\nno par bonus now`, passed: true });
   // Sonar: a ping towards the next beacon, quicker the nearer it is (every 0.7 s near, 2.5 s far),
   // under water only.
   const next = aim.index;
@@ -683,7 +687,7 @@ function stepWorld(world: PhysicsWorld): void {
         if (state.collected === taken.length) {
           state.score += PAR_POINTS * Math.max(0, Math.floor(state.par - state.time));
           recordWin(state.time);
-        } else newBest = false;
+        } else newBest = firstWin = false;
         return;
       }
     }
@@ -931,13 +935,19 @@ function bestTime(): number | null {
 function bestKey(): string {
   return params.level === 1 ? `${params.seed}/${params.beacons}` : `${params.seed}/${params.beacons}/L${params.level}`;
 }
-/** Whether the last win set a new best (shown on the end card). */
+/** Whether the last win set a new best (shown on the end card); not on the first win, with nothing to beat. */
 let newBest = false;
-/** Keeps `time` as the best of this course if it is one. */
+/** Whether the last win was the course's first (kept as its best, with nothing beaten; shown on the end card). */
+let firstWin = false;
+/** The best time the last win beat, s (NaN: none beaten). */
+let beaten = Number.NaN;
+/** Keeps `time` as the best of this course if it is one (the first win always is). */
 function recordWin(time: number): void {
   const best = bestTime();
-  newBest = best === null || time < best;
-  if (!newBest) return;
+  newBest = best !== null && time < best;
+  firstWin = best === null;
+  beaten = newBest && best !== null ? best : Number.NaN;
+  if (best !== null && !newBest) return;
   try {
     const all = JSON.parse(localStorage.getItem(BEST_KEY) ?? '{}') as Record<string, number>;
     all[bestKey()] = time;
@@ -1006,10 +1016,12 @@ function showEnd(): void {
   bestLine.style.cssText = 'color: #b8c8d8; font-size: 14px;';
   bestLine.textContent =
     won && newBest
-      ? 'A new best time for this sea!'
-      : best !== null
-        ? `Best: ${clock(best)}`
-        : 'Mines and the seabed each cost a third of the hull.';
+      ? `A new best time for this sea! (was ${clock(beaten)})`
+      : won && firstWin
+        ? `${clock(state.time)}: the time to beat on this sea next run.`
+        : best !== null
+          ? `Best: ${clock(best)}`
+          : 'Mines and the seabed each cost a third of the hull.';
   endCard.append(line, scoreLine(), bestLine);
   const next = won && params.level < LEVELS.length;
   showAgain(true, next ? `Next level ${params.level + 1} ▶` : won ? 'Play again ▶' : 'Try again ↺');

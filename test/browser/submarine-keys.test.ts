@@ -166,6 +166,47 @@ describe('submarine keys (desktop)', () => {
     expect(g.errors).toEqual([]);
   });
 
+  it('the clock passing par is told on the banner; a first win is not called a new best but the time to beat', async () => {
+    type Won = Sub & {
+      handles(): { beacons: Float64Array };
+      pickupEffect(): { banner: string };
+      endText(): string;
+      state: { time: number; par: number; over: string; startedAt: number };
+    };
+    await g.page.evaluate(() => localStorage.removeItem('bitphysics.submarine.best'));
+    await hover(g.page);
+    await g.page.keyboard.down('d');
+    await frames(g.page, 0.5);
+    await g.page.keyboard.up('d');
+    // Par set 0.3 s ahead of the clock: a second later the banner says it has passed.
+    const banner = await g.page.evaluate(() => {
+      const w = window.game as unknown as Won;
+      w.state.par = w.state.time + 0.3;
+      w.loop.runFrames(60, 1 / 60);
+      return w.pickupEffect().banner;
+    });
+    expect(banner).toMatch(/^Par 0:0\d passed/);
+    // The one beacon (beacons=1) collected: the course's first win, nothing beaten.
+    const end = await g.page.evaluate(() => {
+      const w = window.game as unknown as Won;
+      const c = w.world.components,
+        e = w.hull(),
+        b = w.handles().beacons;
+      c.Position.x[e] = b[0]! - 3;
+      c.Position.y[e] = b[1]!;
+      w.loop.runFrames(60, 1 / 60);
+      return { over: w.state.over, text: w.endText() };
+    });
+    expect(end.over).toBe('won');
+    expect(end.text).not.toMatch(/new best/i);
+    expect(end.text).toMatch(/the time to beat/);
+    await g.page.evaluate(() => {
+      localStorage.removeItem('bitphysics.submarine.best');
+      (window.game as unknown as Sub).loop.start();
+    });
+    expect(g.errors).toEqual([]);
+  });
+
   it('Astern pressed while Ahead is still held backs the boat; let go, Ahead drives it again', async () => {
     await hover(g.page);
     await g.page.keyboard.down('d');
