@@ -294,8 +294,14 @@ const LEAD_EASE = 0.8;
  * limited by it (the desktop's framing is unchanged).
  */
 const PORTRAIT_MIN_WIDTH = 105;
-/** The look-ahead's share of the way to the framing margin (`LEAD_SHARE`) on a portrait view. */
-const PORTRAIT_LEAD_SHARE = 0.8;
+/**
+ * The look-ahead's share of the way to the framing margin (`LEAD_SHARE`) on a portrait view, and
+ * there the most the view's centre leads the hull even toward a target far ahead: 0.55, so under
+ * way the hull's centre sits about 30% of the view in from its trailing edge (it sat at 21%, its
+ * stern near the edge, which read as the boat pressed into the corner), and the bow still has over
+ * 60% of the view's width of sea ahead.
+ */
+const PORTRAIT_LEAD_SHARE = 0.55;
 /**
  * The look-ahead along x on a portrait view, s (`LEAD_TIME` elsewhere): longer, so that on a narrow
  * phone the view is already at its full lead (the boat near the trailing edge, about 60 m of sea
@@ -2152,7 +2158,10 @@ function draw(): void {
   // A target ahead keeps its ring left of the depth gauge's ruler where the hull's room allows (on a
   // phone at the start the ring lay half under it).
   const ringClear = fx > hxw ? fx + BEACON_CATCH - (W / 2 - GAUGE_WIDTH - ON_SCREEN_MARGIN) / k : Number.NEGATIVE_INFINITY;
-  const cx = Math.max(hxw - hullReachRight, Math.min(hxw + hullReachX, atLeast(Math.max((hxw + fx) / 2, ringClear), hxw, leadX))),
+  // On a portrait view the centre keeps within the look-ahead's limit of the hull even when the
+  // target framed is far ahead, so the hull is not pressed into the trailing edge.
+  const leadMost = portrait ? Math.min(hullReachX, leadShare * reachX) : hullReachX;
+  const cx = Math.max(hxw - hullReachRight, Math.min(hxw + leadMost, atLeast(Math.max((hxw + fx) / 2, ringClear), hxw, leadX))),
     cy = Math.min(-H / k / 2 + (0.15 * H) / k, Math.max(hyw - reachY, Math.min(hyw + reachY, atLeast((hyw + fy) / 2, hyw, leadY))));
   camera.x = cx;
   camera.y = cy;

@@ -1689,6 +1689,13 @@ describe.each(SIZES)('submarine helm and framing ($device)', ({ device, viewport
     expect(r.speed).toBeGreaterThan(7);
     expect(r.stern).toBeGreaterThan(60 - 1);
     expect(r.bow).toBeLessThan(r.width - 60);
+    if (device === 'phone') {
+      // On a phone the hull is framed off the trailing edge (a stranger saw it pressed into the left
+      // edge): its centre at least 27% of the view in, and over half of the view ahead of the bow.
+      console.log(`phone framing at full ahead: hull centre ${((100 * (r.stern + r.bow)) / 2 / r.width).toFixed(0)}% in`);
+      expect((r.stern + r.bow) / 2).toBeGreaterThan(0.27 * r.width);
+      expect(r.width - r.bow).toBeGreaterThan(0.5 * r.width);
+    }
     const cross = (a: number[], b: number[]) =>
       a[0]! < b[0]! + b[2]! && b[0]! < a[0]! + a[2]! && a[1]! < b[1]! + b[3]! && b[1]! < a[1]! + a[3]!;
     for (const l of r.labels)
