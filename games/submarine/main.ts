@@ -2158,9 +2158,11 @@ function draw(): void {
   // A target ahead keeps its ring left of the depth gauge's ruler where the hull's room allows (on a
   // phone at the start the ring lay half under it).
   const ringClear = fx > hxw ? fx + BEACON_CATCH - (W / 2 - GAUGE_WIDTH - ON_SCREEN_MARGIN) / k : Number.NEGATIVE_INFINITY;
-  // On a portrait view the centre keeps within the look-ahead's limit of the hull even when the
-  // target framed is far ahead, so the hull is not pressed into the trailing edge.
-  const leadMost = portrait ? Math.min(hullReachX, leadShare * reachX) : hullReachX;
+  // On a portrait view under way, the framing of a target far ahead leads the hull no further than
+  // the look-ahead's limit, so the hull is not pressed into the trailing edge; at rest (the eased
+  // look-ahead near 0) the target's ring is framed as far as the hull's room allows, easing between.
+  const underWay = portrait ? Math.min(1, Math.abs(camera.leadX) / Math.max(1e-9, leadShare * reachX)) : 0;
+  const leadMost = hullReachX - underWay * Math.max(0, hullReachX - leadShare * reachX);
   const cx = Math.max(hxw - hullReachRight, Math.min(hxw + leadMost, atLeast(Math.max((hxw + fx) / 2, ringClear), hxw, leadX))),
     cy = Math.min(-H / k / 2 + (0.15 * H) / k, Math.max(hyw - reachY, Math.min(hyw + reachY, atLeast((hyw + fy) / 2, hyw, leadY))));
   camera.x = cx;
