@@ -1451,8 +1451,10 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
       // The longest speed too: 12 m/s astern (a phone's "◀12", a desktop's "astern 12 m/s").
       c.Velocity.x[e] = -12;
       Object.assign(w.state, { holdY: -110, score: 12340, streak: 5, hits: 1, time: 605 });
-      await new Promise((r) => setTimeout(r, 400));
       const el = document.querySelector<HTMLElement>('[data-hud="gauges"]')!;
+      // The row is written every sixth frame: waits for the page's frames to write it (up to 10 s;
+      // a loaded machine draws a paused page slowly), not for a fixed time.
+      for (let n = 0; n < 200 && !(el.textContent ?? '').includes('12340'); n++) await new Promise((r) => setTimeout(r, 50));
       const line = Number.parseFloat(getComputedStyle(el).lineHeight),
         pad = Number.parseFloat(getComputedStyle(el).paddingTop) + Number.parseFloat(getComputedStyle(el).paddingBottom);
       return {
