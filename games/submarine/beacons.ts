@@ -234,21 +234,21 @@ export function seabedBetween(x0: number, y0: number, x1: number, y1: number, be
 }
 
 /**
- * The pointer's label: how far ahead or behind the beacon lies (along the hull's heading, so "ahead"
- * means "keep the screw ahead") and how far down or up, each when it is 3 m or more, e.g.
+ * The pointer's label: how far ahead or behind the beacon lies (level, along the course: the hull's
+ * pitch does not change the figures, so a boat nosing down or up reads the same beacon the same way)
+ * and how far down or up, each when it is 3 m or more, e.g.
  * "beacon 85 m ahead, 30 m down". The boat moves nearly twice as fast ahead as it dives, so the depth
  * to make up is the part a player must start on early. `dx`, `dy`: the beacon's position minus the
- * hull's, m (y up); `angle`: the hull's pitch, rad; `ridge`: the seabed rises across the straight way
+ * hull's, m (y up); `ridge`: the seabed rises across the straight way
  * to it (`seabedBetween`), which adds `RIDGE_WARNING` on a second line; `mine`: a live mine lies on
  * that way (./mines.ts `mineOnWay`) and on which side to pass it, which adds `MINE_WARNING` there
  * instead when there is no ridge; `name`: the beacon's name (`beaconName`), put first as
  * "target C: 85 m ahead" (the one beacon to steer for, held until collected), so a change of target
  * is seen; without a name the label starts "beacon".
  */
-export function beaconLabel(dx: number, dy: number, angle = 0, ridge = false, mine: '' | 'over' | 'under' = '', name = ''): string {
-  const along = dx * Math.cos(angle) + dy * Math.sin(angle);
+export function beaconLabel(dx: number, dy: number, ridge = false, mine: '' | 'over' | 'under' = '', name = ''): string {
   const parts: string[] = [];
-  if (Math.abs(along) >= 3) parts.push(`${Math.abs(along).toFixed(0)} m ${along > 0 ? 'ahead' : 'behind'}`);
+  if (Math.abs(dx) >= 3) parts.push(`${Math.abs(dx).toFixed(0)} m ${dx > 0 ? 'ahead' : 'behind'}`);
   if (Math.abs(dy) >= 3) parts.push(`${Math.abs(dy).toFixed(0)} m ${dy < 0 ? 'down' : 'up'}`);
   const warning = ridge ? RIDGE_WARNING : mine ? MINE_WARNING[mine] : '';
   return `${name ? `target ${name}: ` : 'beacon '}${parts.length > 0 ? parts.join(', ') : 'here'}${warning ? `\n${warning}` : ''}`;

@@ -119,3 +119,33 @@ export function drawCurrent(
     }
   }
 }
+
+/** The water's speed (m/s) from which the status line names the current and its first push is told. */
+export const CURRENT_SHOWN = 0.3;
+/** The water's speed (m/s) that counts as the current's first push: the note (`currentNote`) comes up then. */
+export const CURRENT_NOTE_SPEED = 0.8;
+/** How long the note of the current's first push stays up, s of game time. */
+export const CURRENT_NOTE_LIFE = 6;
+
+/**
+ * The current for the status line: "current ◀2.4" (m/s, a tenth; the arrow the way the water flows,
+ * ▶ the way the course runs), '' under `CURRENT_SHOWN`. `u`: the water's speed, m/s.
+ * @throws RangeError when `u` is not finite.
+ */
+export function currentMark(u: number): string {
+  if (!Number.isFinite(u)) throw new RangeError(`currentMark: u must be finite m/s, got ${u}`);
+  if (Math.abs(u) < CURRENT_SHOWN) return '';
+  return `current ${u > 0 ? '▶' : '◀'}${Math.abs(u).toFixed(1)}`;
+}
+
+/**
+ * The note told the first time the current pushes the boat (the water at `u` m/s, |u| at least
+ * `CURRENT_NOTE_SPEED`): which way it carries the boat, how fast, and that the speed shown is over
+ * the ground. `u`: the water's speed, m/s (positive: the way the course runs).
+ * @throws RangeError when `u` is not finite.
+ */
+export function currentNote(u: number): string {
+  if (!Number.isFinite(u)) throw new RangeError(`currentNote: u must be finite m/s, got ${u}`);
+  const way = u < 0 ? '◀ against you' : '▶ with you';
+  return `Current ${way}, ${Math.abs(u).toFixed(1)} m/s: it carries the boat (speed shown over the ground)`;
+}

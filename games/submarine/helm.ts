@@ -60,7 +60,7 @@ export interface HelmInput {
   heave?: number;
   /**
    * How far Ahead or Astern is asked, in (0, 1]: the throttle the screw runs up to (ahead) or
-   * -0.5 times it (astern). Default 1 (a key); the on-screen stick sets it from how far it is pushed.
+   * -`HELM.asternShare` times it (astern). Default 1 (a key); the on-screen stick sets it from how far it is pushed.
    */
   drive?: number;
   /**
@@ -83,7 +83,7 @@ export const NO_INPUT: Readonly<HelmInput> = Object.freeze({
 
 /** What the helm keeps between steps and last commanded (read by the gauges). */
 export interface HelmState {
-  /** Screw throttle, fraction of `SUBMARINE.maxThrust`, in [-0.5, 1]. */
+  /** Screw throttle, fraction of `SUBMARINE.maxThrust`, in [-HELM.asternShare, 1]. */
   throttle: number;
   /** Mean tank fill the pumps move towards, in [0, 1]. */
   fill: number;
@@ -190,7 +190,7 @@ export const HELM = Object.freeze({
   /**
    * The boat's top speed ahead at full throttle, m/s (15.5 knots, a fast small submersible): the
    * screw's governor (`screwPush`) runs the screw's full 400 kN until the boat nears the speed its
-   * throttle asks for (the throttle times this; half of it astern) and then only what holds it
+   * throttle asks for (the throttle times this; `asternShare` of it astern) and then only what holds it
    * there. The screw alone would take the 12 m boat to 12.9 m/s (400 kN against drag k v^2), too fast
    * to stop at a beacon reached by holding Ahead.
    */
@@ -226,15 +226,21 @@ export const HELM = Object.freeze({
    * stops in about 2 m and 0.6 s, at 16 m/s^2 (1.6 g) of brake at most, plus the drag.
    */
   asternBrake: 2,
+  /**
+   * Share of full throttle the screw runs at astern (Astern held, or the stick pushed back all the
+   * way): 0.75, backing at up to 6 m/s, so a boat that ran past a beacon backs 7 m onto its ring from
+   * a stop in about 2.5 s (3 s at half, 4 m/s).
+   */
+  asternShare: 0.75,
 });
 
 /**
  * The horizontal force the coasting brake gives, N (against the motion: negative for a boat moving
  * ahead, positive for one backing): a boat of `mass` kg moving at `u` m/s horizontally (positive
- * ahead) with the screw at `throttle` (fraction of full, in [-0.5, 1]) is braked at
+ * ahead) with the screw at `throttle` (fraction of full, in [-HELM.asternShare, 1]) is braked at
  * `HELM.coastBrake` times the share of the screw not pushing the way it moves, and in proportion to
  * its speed below `HELM.coastFade`. Moving ahead the share is 1 - throttle (0 at full ahead, 1.5 at
- * full astern), and at least `HELM.asternBrake` while Astern is held (`astern`: the brake); backing it is 1 + throttle / 0.5, in [0, 1.5] (0 at full
+ * full astern), and at least `HELM.asternBrake` while Astern is held (`astern`: the brake); backing it is 1 + throttle / `HELM.asternShare`, in [0, 1.5] (0 at full
  * astern, so the brake never fights the screw backing the boat; 1 with the screw stopped, so a boat
  * let go while backing stops too). Zero for a boat at rest. `astern`: whether Astern is held (default false).
  * @throws RangeError when `mass` is not a finite positive number, or `u` or `throttle` is not finite.
@@ -243,14 +249,14 @@ export function coastBrake(mass: number, u: number, throttle: number, astern = f
   if (!(Number.isFinite(mass) && mass > 0)) throw new RangeError(`coastBrake: mass must be a finite number > 0 kg, got ${mass}`);
   if (!Number.isFinite(u)) throw new RangeError(`coastBrake: u must be finite, got ${u}`);
   if (!Number.isFinite(throttle)) throw new RangeError(`coastBrake: throttle must be finite, got ${throttle}`);
-  const t = clamp(throttle, -0.5, 1);
-  const share = u >= 0 ? (astern ? Math.max(HELM.asternBrake, 1 - t) : 1 - t) : clamp(1 + t / 0.5, 0, 1.5);
+  const t = clamp(throttle, -HELM.asternShare, 1);
+  const share = u >= 0 ? (astern ? Math.max(HELM.asternBrake, 1 - t) : 1 - t) : clamp(1 + t / HELM.asternShare, 0, 1.5);
   return -mass * HELM.coastBrake * share * clamp(u / HELM.coastFade, -1, 1);
 }
 
 /**
  * The screw's push along the hull, N (positive ahead), for a boat of `mass` kg moving at `u` m/s
- * along its hull (positive ahead) with the throttle at `throttle` (fraction of full, in [-0.5, 1]):
+ * along its hull (positive ahead) with the throttle at `throttle` (fraction of full, in [-HELM.asternShare, 1]):
  * the throttle's share of `SUBMARINE.maxThrust`, but no more than holds the boat at the speed the
  * throttle asks for (`throttle` times `HELM.topSpeed`): the submerged drag there (k v^2, the scene's
  * drag coefficient k) plus m (v_asked - u) / `HELM.speedTime`, never pulling the other way. Zero
@@ -261,7 +267,7 @@ export function screwPush(mass: number, u: number, throttle: number): number {
   if (!(Number.isFinite(mass) && mass > 0)) throw new RangeError(`screwPush: mass must be a finite number > 0 kg, got ${mass}`);
   if (!Number.isFinite(u)) throw new RangeError(`screwPush: u must be finite m/s, got ${u}`);
   if (!Number.isFinite(throttle)) throw new RangeError(`screwPush: throttle must be finite, got ${throttle}`);
-  const t = clamp(throttle, -0.5, 1);
+  const t = clamp(throttle, -HELM.asternShare, 1);
   if (t === 0) return 0;
   const sign = Math.sign(t),
     asked = Math.abs(t) * HELM.topSpeed;
@@ -373,7 +379,7 @@ export function steer(world: PhysicsWorld, handles: SubmarineHandles, input: Hel
   // winds back at throttleRelease toward it when it is past it (a stick eased back) or to stop.
   // Neither held: the screw winds down to stop and the boat coasts, slowed by the water's drag.
   const keep = input.keepThrottle === true && !input.ahead && !input.astern;
-  const asked = keep ? state.throttle : input.ahead === input.astern ? 0 : input.ahead ? driveAsked : -0.5 * driveAsked;
+  const asked = keep ? state.throttle : input.ahead === input.astern ? 0 : input.ahead ? driveAsked : -HELM.asternShare * driveAsked;
   // Winding towards stop (a key let go, or Astern from ahead) is at the faster of the two rates.
   const pushing =
     (asked > 0 && state.throttle < asked && state.throttle >= 0) || (asked < 0 && state.throttle > asked && state.throttle <= 0);
@@ -502,7 +508,7 @@ export function steer(world: PhysicsWorld, handles: SubmarineHandles, input: Hel
 
 /**
  * How far a submerged boat moving ahead at `u` m/s (horizontally, level) glides once Ahead is let
- * go with the screw at `throttle` (fraction of full, in [-0.5, 1]), m: the same law the helm and
+ * go with the screw at `throttle` (fraction of full, in [-HELM.asternShare, 1]), m: the same law the helm and
  * the sea apply, stepped at `dt` s (the world's step): the throttle winds down to stop at
  * max(`HELM.throttleRate`, `HELM.throttleRelease`) per second, the screw pushes `screwPush`, the
  * coasting brake `coastBrake` and the drag k u^2 (`SUBMARINE.dragCoefficient`) hold it back, until
@@ -516,7 +522,7 @@ export function coastDistance(mass: number, u: number, throttle: number, dt = 1 
   if (!Number.isFinite(throttle)) throw new RangeError(`coastDistance: throttle must be finite, got ${throttle}`);
   if (!(Number.isFinite(dt) && dt > 0)) throw new RangeError(`coastDistance: dt must be a finite number > 0 s, got ${dt}`);
   const rate = Math.max(HELM.throttleRate, HELM.throttleRelease) * dt;
-  let t = clamp(throttle, -0.5, 1),
+  let t = clamp(throttle, -HELM.asternShare, 1),
     v = u,
     x = 0;
   // At most 60 s of glide: the coasting brake stops any boat the screw can drive long before.

@@ -54,7 +54,7 @@ import {
   seabedBetween,
 } from './beacons';
 import { drawBoat, HEADLIGHT, inHeadlight } from './boat-drawing';
-import { currentAt, drawCurrent, driftInCurrent } from './current';
+import { CURRENT_NOTE_LIFE, CURRENT_NOTE_SPEED, currentAt, currentMark, currentNote, drawCurrent, driftInCurrent } from './current';
 import { coastDistance, createHelmState, HELM, type HelmInput, keyHeaveShare, NO_INPUT, steer } from './helm';
 import { LEVELS, levelCourse, MAX_BEACONS } from './levels';
 import {
@@ -294,8 +294,14 @@ const LEAD_EASE = 0.8;
  * limited by it (the desktop's framing is unchanged).
  */
 const PORTRAIT_MIN_WIDTH = 105;
-/** The look-ahead's share of the way to the framing margin (`LEAD_SHARE`) on a portrait view. */
-const PORTRAIT_LEAD_SHARE = 0.8;
+/**
+ * The look-ahead's share of the way to the framing margin (`LEAD_SHARE`) on a portrait view, and
+ * there the most the view's centre leads the hull even toward a target far ahead: 0.55, so under
+ * way the hull's centre sits about 30% of the view in from its trailing edge (it sat at 21%, its
+ * stern near the edge, which read as the boat pressed into the corner), and the bow still has over
+ * 60% of the view's width of sea ahead.
+ */
+const PORTRAIT_LEAD_SHARE = 0.55;
 /**
  * The look-ahead along x on a portrait view, s (`LEAD_TIME` elsewhere): longer, so that on a narrow
  * phone the view is already at its full lead (the boat near the trailing edge, about 60 m of sea
@@ -548,7 +554,11 @@ function stepWorld(world: PhysicsWorld): void {
   // The clock starts with the first control held, not when the page loads.
   const anyHeld = input.dive || input.rise || input.noseDown || input.noseUp || input.ahead || input.astern;
   if (Number.isNaN(state.startedAt) && anyHeld) state.startedAt = world.time;
+  const before = state.time;
   state.time = Number.isNaN(state.startedAt) ? 0 : world.time - state.startedAt;
+  // The clock passing par is told once, on the banner in the hits' red-orange: the par bonus is gone.
+  if (before <= state.par && state.time > state.par && state.par > 0)
+    pickups.push({ x: 0, y: 0, time: world.time, text: `Par ${clock(state.par)} passed\nno par bonus now`, passed: true });
   // Sonar: a ping towards the next beacon, quicker the nearer it is (every 0.7 s near, 2.5 s far),
   // under water only.
   const next = aim.index;
@@ -683,7 +693,7 @@ function stepWorld(world: PhysicsWorld): void {
         if (state.collected === taken.length) {
           state.score += PAR_POINTS * Math.max(0, Math.floor(state.par - state.time));
           recordWin(state.time);
-        } else newBest = false;
+        } else newBest = firstWin = false;
         return;
       }
     }
@@ -787,12 +797,12 @@ const pointer = new Text({
 });
 pointer.anchor.set(0.5);
 app.stage.addChild(pointer);
-/** The banner over the scene when a beacon is collected ("Beacon 2 of 6"), fading out. */
+/** The banner at the top of the scene when a beacon is collected ("Beacon 2 of 6"), fading out. */
 const banner = new Text({
   text: '',
   style: {
     fill: 0xffe066,
-    fontSize: 30,
+    fontSize: 26,
     align: 'center',
     fontWeight: '800',
     fontFamily: 'system-ui, sans-serif',
@@ -866,6 +876,29 @@ glowNote.style.cssText =
   'box-sizing: border-box; padding: 5px 12px; border-radius: 10px; background: rgba(4, 16, 30, 0.82); color: #b8ffe9;' +
   `font: 600 ${compact ? 13 : 14}px/1.35 system-ui, sans-serif; text-align: center; pointer-events: none; display: none;`;
 pageLayout().stage.append(glowNote);
+/** The note over the bottom of the scene the first time the level's current pushes the boat (./current.ts currentNote). */
+const currentNoteEl = document.createElement('div');
+currentNoteEl.dataset.sceneOverlay = '';
+currentNoteEl.dataset.hud = 'current-note';
+currentNoteEl.style.cssText =
+  `position: absolute; z-index: 4; left: 10px; right: ${compact ? 90 : 70}px; bottom: 10px; width: fit-content; margin: 0 auto;` +
+  'box-sizing: border-box; padding: 5px 12px; border-radius: 10px; background: rgba(4, 16, 30, 0.82); color: #cfeeff;' +
+  `font: 600 ${compact ? 13 : 14}px/1.35 system-ui, sans-serif; text-align: center; pointer-events: none; display: none;`;
+pageLayout().stage.append(currentNoteEl);
+/** Game time the current's note came up, s (NaN until the current first pushes the boat under way; once a page). */
+const currentSeen = { shown: Number.NaN };
+/**
+ * Brings up the current's note at game time `t` (s) the first time the water at the hull, `u` m/s,
+ * runs at CURRENT_NOTE_SPEED or more once the run has started, and keeps it up CURRENT_NOTE_LIFE s.
+ */
+function showCurrentNote(t: number, u: number): void {
+  if (Number.isNaN(currentSeen.shown) && !state.over && Number.isFinite(state.startedAt) && Math.abs(u) >= CURRENT_NOTE_SPEED) {
+    currentSeen.shown = t;
+    currentNoteEl.textContent = currentNote(u);
+  }
+  const display = !state.over && t - currentSeen.shown < CURRENT_NOTE_LIFE ? 'block' : 'none';
+  if (currentNoteEl.style.display !== display) currentNoteEl.style.display = display;
+}
 /**
  * Shows the first-time hint from the moment a glow is first in view (`inView`) at game time `t`, s,
  * for GLOW_HINT_LIFE s, and at least GLOW_HINT_AFTER s after the first glow caught; once a page.
@@ -908,13 +941,19 @@ function bestTime(): number | null {
 function bestKey(): string {
   return params.level === 1 ? `${params.seed}/${params.beacons}` : `${params.seed}/${params.beacons}/L${params.level}`;
 }
-/** Whether the last win set a new best (shown on the end card). */
+/** Whether the last win set a new best (shown on the end card); not on the first win, with nothing to beat. */
 let newBest = false;
-/** Keeps `time` as the best of this course if it is one. */
+/** Whether the last win was the course's first (kept as its best, with nothing beaten; shown on the end card). */
+let firstWin = false;
+/** The best time the last win beat, s (NaN: none beaten). */
+let beaten = Number.NaN;
+/** Keeps `time` as the best of this course if it is one (the first win always is). */
 function recordWin(time: number): void {
   const best = bestTime();
-  newBest = best === null || time < best;
-  if (!newBest) return;
+  newBest = best !== null && time < best;
+  firstWin = best === null;
+  beaten = newBest && best !== null ? best : Number.NaN;
+  if (best !== null && !newBest) return;
   try {
     const all = JSON.parse(localStorage.getItem(BEST_KEY) ?? '{}') as Record<string, number>;
     all[bestKey()] = time;
@@ -983,10 +1022,12 @@ function showEnd(): void {
   bestLine.style.cssText = 'color: #b8c8d8; font-size: 14px;';
   bestLine.textContent =
     won && newBest
-      ? 'A new best time for this sea!'
-      : best !== null
-        ? `Best: ${clock(best)}`
-        : 'Mines and the seabed each cost a third of the hull.';
+      ? `A new best time for this sea! (was ${clock(beaten)})`
+      : won && firstWin
+        ? `${clock(state.time)}: the time to beat on this sea next run.`
+        : best !== null
+          ? `Best: ${clock(best)}`
+          : 'Mines and the seabed each cost a third of the hull.';
   endCard.append(line, scoreLine(), bestLine);
   const next = won && params.level < LEVELS.length;
   showAgain(true, next ? `Next level ${params.level + 1} ▶` : won ? 'Play again ▶' : 'Try again ↺');
@@ -1786,10 +1827,14 @@ function declutter(H: number, hull: readonly number[]): void {
     if (aim.badge[2]! > 0) take('badge', aim.badge);
   }
   if (gaugeDepth?.visible) take('depth', boxOf(gaugeDepth));
-  if (glowNote.style.display !== 'none') {
+  for (const [name, note] of [
+    ['glow hint', glowNote],
+    ['current note', currentNoteEl],
+  ] as const) {
+    if (note.style.display === 'none') continue;
     const stage = app.canvas.getBoundingClientRect(),
-      b = glowNote.getBoundingClientRect();
-    take('glow hint', [b.left - stage.left, b.top - stage.top, b.width, b.height]);
+      b = note.getBoundingClientRect();
+    take(name, [b.left - stage.left, b.top - stage.top, b.width, b.height]);
   }
   // A text moved down (or up: `dir` -1) past every box it covers, inside the scene.
   const slide = (t: Text, dir: number) => {
@@ -1803,8 +1848,9 @@ function declutter(H: number, hull: readonly number[]): void {
     }
   };
   if (banner.visible) {
-    // On a phone the banner sits at the top of the scene with the other messages, under the hint.
-    if (compact) banner.y = 8 + banner.height / 2;
+    // The banner sits at the top of the scene with the other messages, under the hint, not over the
+    // sea ahead of the boat that the player steers into.
+    banner.y = 8 + banner.height / 2;
     slide(banner, 1);
     take('banner', boxOf(banner));
   }
@@ -2112,7 +2158,12 @@ function draw(): void {
   // A target ahead keeps its ring left of the depth gauge's ruler where the hull's room allows (on a
   // phone at the start the ring lay half under it).
   const ringClear = fx > hxw ? fx + BEACON_CATCH - (W / 2 - GAUGE_WIDTH - ON_SCREEN_MARGIN) / k : Number.NEGATIVE_INFINITY;
-  const cx = Math.max(hxw - hullReachRight, Math.min(hxw + hullReachX, atLeast(Math.max((hxw + fx) / 2, ringClear), hxw, leadX))),
+  // On a portrait view under way, the framing of a target far ahead leads the hull no further than
+  // the look-ahead's limit, so the hull is not pressed into the trailing edge; at rest (the eased
+  // look-ahead near 0) the target's ring is framed as far as the hull's room allows, easing between.
+  const underWay = portrait ? Math.min(1, Math.abs(camera.leadX) / Math.max(1e-9, leadShare * reachX)) : 0;
+  const leadMost = hullReachX - underWay * Math.max(0, hullReachX - leadShare * reachX);
+  const cx = Math.max(hxw - hullReachRight, Math.min(hxw + leadMost, atLeast(Math.max((hxw + fx) / 2, ringClear), hxw, leadX))),
     cy = Math.min(-H / k / 2 + (0.15 * H) / k, Math.max(hyw - reachY, Math.min(hyw + reachY, atLeast((hyw + fy) / 2, hyw, leadY))));
   camera.x = cx;
   camera.y = cy;
@@ -2253,6 +2304,7 @@ function draw(): void {
     t,
     glows.some((gl, i) => glowState[i] === 0 && gl.x > left && gl.x < right && sy(gl.y) > 0 && sy(gl.y) < H),
   );
+  showCurrentNote(t, currentAt(params.level, hyw));
   drawMines(t, k, sx, sy, left, right, hxw, hyw, c.Angle.value[e]!);
   // Beacons: a lamp (at least 5 px, however far the camera zooms out) in a soft pulsing glow, inside
   // its one ring, the catch radius (BEACON_CATCH: any part of the hull inside it collects; the help
@@ -2378,7 +2430,7 @@ function draw(): void {
     // A missed beacon's banner in the hits' red-orange, a collected one's in the beacons' yellow.
     banner.style.fill = newest.passed ? 0xff9e8a : 0xffe066;
     banner.x = W / 2;
-    banner.y = H * 0.28;
+    banner.y = 8 + banner.height / 2;
     banner.alpha = u < 0.7 ? 1 : (1 - u) / 0.3;
     banner.scale.set(u < 0.08 ? 0.6 + 0.4 * (u / 0.08) + 0.15 * Math.sin((Math.PI * u) / 0.08) : 1);
   }
@@ -2402,7 +2454,7 @@ function draw(): void {
     wayMine = onWay ? onWay.index : -1;
     // A mine on the way is ringed where it is, and a mine on the boat's course is told by the hull
     // (drawMineWarning), where the player looks: the pointer at the screen's edge tells only the ridge.
-    pointer.text = beaconLabel(wx - hxw, wy - hyw, c.Angle.value[e]!, ridge, '', beaconName(aim.index));
+    pointer.text = beaconLabel(wx - hxw, wy - hyw, ridge, '', beaconName(aim.index));
     // Heading for the finish with beacons skipped: collecting it ends the run, so the label says
     // which are still to fetch (backing to them first keeps every beacon in reach).
     const behind = taken.flatMap((t, i) => (t || i === aim.index ? [] : [beaconName(i)]));
@@ -2800,9 +2852,12 @@ function draw(): void {
     `L${params.level}${compact ? '' : ' ·'} ◯ ${state.collected}/${taken.length}${missedText} · ${clock(state.time)}/${clock(state.par)}`;
   // The clock turns red once par has passed.
   goal.style.color = !state.over && state.time > state.par ? '#ff9e8a' : '#ffe066';
+  // The speed is over the ground (the hull's own velocity); the water's, where it flows, beside it
+  // ("current ◀2.4"), so a boat held back by the current is seen to be, not only felt.
+  const water = currentMark(currentAt(params.level, c.Position.y[e]!));
   readoutText.textContent = compact
-    ? `${Math.max(0, depth).toFixed(0)}${ordered.replace(/ /g, '')} m ${speedMark(c.Velocity.x[e]!)}${stopped ? ' · seabed' : ''} · ${state.score} · `
-    : `${Math.max(0, depth).toFixed(0)}${ordered} m${stopped} · ${speedWords(c.Velocity.x[e]!)} · ${state.score} pts${streak} · `;
+    ? `${Math.max(0, depth).toFixed(0)}${ordered.replace(/ /g, '')} m ${speedMark(c.Velocity.x[e]!)}${water ? ` ${water.replace('current ', '≋')}` : ''}${stopped ? ' · seabed' : ''} · ${state.score} · `
+    : `${Math.max(0, depth).toFixed(0)}${ordered} m${stopped} · ${speedWords(c.Velocity.x[e]!)}${water ? ` over ground, ${water}` : ''} · ${state.score} pts${streak} · `;
   showHull();
   seabedLine.textContent = `seabed ${(-floor).toFixed(0)} m`;
   physicsText.textContent = [
@@ -2925,8 +2980,8 @@ shell.expose({
   pauseOverlay: () => ({ visible: pause.visible, text: pause.text }),
   /** The end card's text ('' while the run goes on). */
   endText: (): string => (endCard.style.display === 'none' ? '' : (endCard.textContent ?? '')),
-  /** Sets the screw's throttle directly, in [-0.5, 1] (the helm sets the tanks and thrusters each step). */
+  /** Sets the screw's throttle directly, in [-HELM.asternShare, 1] (the helm sets the tanks and thrusters each step). */
   setControls: (controls: { throttle?: number }): void => {
-    if (controls.throttle !== undefined) state.throttle = Math.min(1, Math.max(-0.5, controls.throttle));
+    if (controls.throttle !== undefined) state.throttle = Math.min(1, Math.max(-HELM.asternShare, controls.throttle));
   },
 });

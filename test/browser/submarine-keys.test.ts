@@ -26,24 +26,24 @@ type Sub = {
 };
 
 /**
- * A fresh world with the boat hovering at 30 m (tanks at neutral, holding the depth), the game
+ * A fresh world with the boat hovering at height `y` (m; default 30 m down; tanks at neutral, holding the depth), the game
  * running and its animation loop stopped: no frame runs until the test runs them (`frames`), as
  * in a stall. Returns the hull's x, m.
  */
-function hover(page: Page): Promise<number> {
-  return page.evaluate(() => {
+function hover(page: Page, y = -30): Promise<number> {
+  return page.evaluate((y) => {
     const w = window.game as unknown as Sub;
     w.reset();
     w.paused = false;
     w.loop.stop();
     const c = w.world.components,
       e = w.hull();
-    c.Position.y[e] = -30;
+    c.Position.y[e] = y;
     c.Velocity.y[e] = 0;
     c.Ballast.fore[e] = c.Ballast.aft[e] = 0.7675;
-    Object.assign(w.state, { holdY: -30, mode: 'holding', fill: 0.7675 });
+    Object.assign(w.state, { holdY: y, mode: 'holding', fill: 0.7675 });
     return c.Position.x[e]!;
-  });
+  }, y);
 }
 
 /** Runs `seconds` of game time in frames of 1/60 s now, with `paused` set first; returns the hull's x (m) and velocity along x (m/s). */
@@ -112,13 +112,108 @@ describe('submarine keys (desktop)', () => {
     expect(g.errors).toEqual([]);
   });
 
+  it('on level 2 the current is told: a note the first time it pushes the boat, the status line names it beside the speed over the ground', async () => {
+    const read = () =>
+      g.page.evaluate(() => ({
+        status: document.querySelector('[data-hud="readout"]')?.textContent ?? '',
+        note: (document.querySelector('[data-hud="current-note"]') as HTMLElement | null)?.style.display === 'block',
+        noteText: document.querySelector('[data-hud="current-note"]')?.textContent ?? '',
+      }));
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as Sub & { params: { level: number } };
+      w.params.level = 2;
+    });
+    // 10 m down on level 2 the water runs at 1.5 sin(pi 10 / 35 + 0.6) = 1.5 m/s (./current.ts).
+    await hover(g.page, -10);
+    await frames(g.page, 1);
+    expect((await read()).note).toBe(false);
+    await g.page.keyboard.down('d');
+    await frames(g.page, 1);
+    await g.page.keyboard.up('d');
+    const told = await read();
+    expect(told.note).toBe(true);
+    expect(told.noteText).toMatch(/Current ▶ with you, 1\.5 m\/s/);
+    expect(told.status).toMatch(/ahead [\d.]+ m\/s over ground, current ▶1\.5/);
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as Sub & { params: { level: number } };
+      w.params.level = 1;
+      w.loop.start();
+    });
+    expect(g.errors).toEqual([]);
+  });
+
+  it("the target's label gives level figures: the boat pitched 17 degrees reads the beacon as far ahead and down as the plain differences", async () => {
+    // 20 m over beacon A's depth, 60 m short of it, nose down 0.3 rad: along the hull the beacon
+    // would read 60 cos 0.3 + 20 sin 0.3 = 63 m ahead; level, 60 m ahead and 20 m down.
+    await hover(g.page);
+    const read = await g.page.evaluate(() => {
+      const w = window.game as unknown as Sub & { handles(): { beacons: Float64Array }; beaconPointer(): { text: string } };
+      const c = w.world.components as Sub['world']['components'] & { Angle: { value: Float64Array } },
+        e = w.hull(),
+        b = w.handles().beacons;
+      c.Position.x[e] = b[0]! - 60;
+      c.Position.y[e] = b[1]! + 20;
+      c.Angle.value[e] = -0.3;
+      w.loop.runFrames(1, 1 / 60);
+      return { text: w.beaconPointer().text, dx: b[0]! - c.Position.x[e]!, dy: b[1]! - c.Position.y[e]!, angle: c.Angle.value[e]! };
+    });
+    expect(Math.abs(read.angle)).toBeGreaterThan(0.25);
+    const [, ahead, down] = read.text.match(/(\d+) m ahead, (\d+) m down/) ?? [];
+    // Within 1 m: the figures are rounded to the metre.
+    expect(Math.abs(Number(ahead) - read.dx)).toBeLessThanOrEqual(1);
+    expect(Math.abs(Number(down) + read.dy)).toBeLessThanOrEqual(1);
+    await g.page.evaluate(() => (window.game as unknown as Sub).loop.start());
+    expect(g.errors).toEqual([]);
+  });
+
+  it('the clock passing par is told on the banner; a first win is not called a new best but the time to beat', async () => {
+    type Won = Sub & {
+      handles(): { beacons: Float64Array };
+      pickupEffect(): { banner: string };
+      endText(): string;
+      state: { time: number; par: number; over: string; startedAt: number };
+    };
+    await g.page.evaluate(() => localStorage.removeItem('bitphysics.submarine.best'));
+    await hover(g.page);
+    await g.page.keyboard.down('d');
+    await frames(g.page, 0.5);
+    await g.page.keyboard.up('d');
+    // Par set 0.3 s ahead of the clock: a second later the banner says it has passed.
+    const banner = await g.page.evaluate(() => {
+      const w = window.game as unknown as Won;
+      w.state.par = w.state.time + 0.3;
+      w.loop.runFrames(60, 1 / 60);
+      return w.pickupEffect().banner;
+    });
+    expect(banner).toMatch(/^Par 0:0\d passed/);
+    // The one beacon (beacons=1) collected: the course's first win, nothing beaten.
+    const end = await g.page.evaluate(() => {
+      const w = window.game as unknown as Won;
+      const c = w.world.components,
+        e = w.hull(),
+        b = w.handles().beacons;
+      c.Position.x[e] = b[0]! - 3;
+      c.Position.y[e] = b[1]!;
+      w.loop.runFrames(60, 1 / 60);
+      return { over: w.state.over, text: w.endText() };
+    });
+    expect(end.over).toBe('won');
+    expect(end.text).not.toMatch(/new best/i);
+    expect(end.text).toMatch(/the time to beat/);
+    await g.page.evaluate(() => {
+      localStorage.removeItem('bitphysics.submarine.best');
+      (window.game as unknown as Sub).loop.start();
+    });
+    expect(g.errors).toEqual([]);
+  });
+
   it('Astern pressed while Ahead is still held backs the boat; let go, Ahead drives it again', async () => {
     await hover(g.page);
     await g.page.keyboard.down('d');
     const ahead = await frames(g.page, 1.5);
     expect(ahead.vx).toBeGreaterThan(3);
     await g.page.keyboard.down('a');
-    // Astern brakes the boat and backs it at up to half its top speed (./helm.ts: 4 m/s).
+    // Astern brakes the boat and backs it at up to HELM.asternShare of its top speed (./helm.ts: 6 m/s).
     const backing = await frames(g.page, 3);
     expect(backing.vx).toBeLessThan(-2);
     expect(await g.page.evaluate(() => (window.game as unknown as Sub).state.throttle)).toBeLessThan(-0.4);

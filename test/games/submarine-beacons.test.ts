@@ -191,10 +191,10 @@ describe('submarine beacon pointer', () => {
     expect(beaconLabel(20, -2)).toBe('beacon 20 m ahead');
     expect(beaconLabel(1, -2)).toBe('beacon here');
     // A mine on the way adds which side to pass it; a ridge, the more urgent, takes the line instead.
-    expect(beaconLabel(20, -2, 0, false, 'over')).toBe(`beacon 20 m ahead\n${MINE_WARNING.over}`);
-    expect(beaconLabel(20, -2, 0, true, 'under')).toBe(`beacon 20 m ahead\n${RIDGE_WARNING}`);
+    expect(beaconLabel(20, -2, false, 'over')).toBe(`beacon 20 m ahead\n${MINE_WARNING.over}`);
+    expect(beaconLabel(20, -2, true, 'under')).toBe(`beacon 20 m ahead\n${RIDGE_WARNING}`);
     // Named, so that a switch to another beacon is seen ("52 m ahead" then "157 m ahead" was not).
-    expect(beaconLabel(52, 9, 0, false, '', beaconName(2))).toBe('target C: 52 m ahead, 9 m up');
+    expect(beaconLabel(52, 9, false, '', beaconName(2))).toBe('target C: 52 m ahead, 9 m up');
     expect([0, 1, 25, 26, 27].map(beaconName)).toEqual(['A', 'B', 'Z', 'A2', 'B2']);
     expect(() => beaconName(-1)).toThrow(/beaconName: index must be an integer >= 0, got -1/);
     expect(() => beaconName(1.5)).toThrow(/beaconName: index/);
@@ -205,10 +205,10 @@ describe('submarine beacon pointer', () => {
     // apart at 40 m down: the line between them is level and 15 m under the ridge's top.
     const bed = (x: number) => (x >= 20 && x <= 40 ? -25 : -60);
     expect(seabedBetween(0, -40, 59, -40, bed)).toBe(true);
-    expect(beaconLabel(59, 0, 0, seabedBetween(0, -40, 59, -40, bed))).toBe(`beacon 59 m ahead\n${RIDGE_WARNING}`);
+    expect(beaconLabel(59, 0, seabedBetween(0, -40, 59, -40, bed))).toBe(`beacon 59 m ahead\n${RIDGE_WARNING}`);
     // At 20 m down the line clears the ridge by 5 m: no warning.
     expect(seabedBetween(0, -20, 59, -20, bed)).toBe(false);
-    expect(beaconLabel(59, 0, 0, seabedBetween(0, -20, 59, -20, bed))).toBe('beacon 59 m ahead');
+    expect(beaconLabel(59, 0, seabedBetween(0, -20, 59, -20, bed))).toBe('beacon 59 m ahead');
     // A ridge 1 m wide is not stepped over by the sampling (every metre or less).
     const thin = (x: number) => (x >= 30.2 && x <= 31.1 ? -25 : -60);
     expect(seabedBetween(0, -40, 59, -40, thin)).toBe(true);

@@ -12,7 +12,7 @@ import { createPhysicsWorld, step } from '@bitphysics/physics';
 import { SUBMARINE, SUBMARINE_NEUTRAL_FILL, submarine } from '@bitphysics/projects';
 import { describe, expect, it } from 'vitest';
 import { BEACON_CATCH } from '../../games/submarine/beacons';
-import { CURRENTS, currentAt, driftInCurrent } from '../../games/submarine/current';
+import { CURRENT_SHOWN, CURRENTS, currentAt, currentMark, currentNote, driftInCurrent } from '../../games/submarine/current';
 import { createHelmState, type HelmInput, NO_INPUT, steer } from '../../games/submarine/helm';
 
 /** A neutral boat hovering at height `y` on a calm sea over open water, at rest, holding that depth. */
@@ -83,5 +83,14 @@ describe('submarine currents', () => {
     }
     console.log(`held against ${w} m/s for 20 s: at most ${worst.toFixed(2)} m off the beacon`);
     expect(worst).toBeLessThan(BEACON_CATCH / 2);
+  });
+
+  it('the current is named by the way it flows and its speed, and not at all where it is slack', () => {
+    expect(currentMark(-2.36)).toBe('current ◀2.4');
+    expect(currentMark(1.5)).toBe('current ▶1.5');
+    expect(currentMark(CURRENT_SHOWN * 0.9)).toBe('');
+    expect(currentNote(-2.4)).toMatch(/against you, 2\.4 m\/s/);
+    expect(currentNote(1.5)).toMatch(/with you, 1\.5 m\/s/);
+    expect(() => currentMark(Number.NaN)).toThrow(RangeError);
   });
 });

@@ -202,9 +202,9 @@ describe('submarine helm', () => {
     expect(coastBrake(1e5, 10, -0.5)).toBeCloseTo(-1.5e5 * HELM.coastBrake, 6);
     // Backing: none with the screw at full astern (it must not fight the screw), all of it with the
     // screw stopped (let go, the backing stops too), more with the screw ahead.
-    expect(coastBrake(1e5, -10, -0.5)).toBeCloseTo(0, 9);
+    expect(coastBrake(1e5, -10, -HELM.asternShare)).toBeCloseTo(0, 9);
     expect(coastBrake(1e5, -HELM.coastFade / 2, 0)).toBeCloseTo((1e5 * HELM.coastBrake) / 2, 6);
-    expect(coastBrake(1e5, -10, 0.25)).toBeCloseTo(1.5e5 * HELM.coastBrake, 6);
+    expect(coastBrake(1e5, -10, 0.25)).toBeCloseTo((1 + 0.25 / HELM.asternShare) * 1e5 * HELM.coastBrake, 6);
     expect(() => coastBrake(0, 1, 0)).toThrow(/coastBrake: mass/);
     expect(() => coastBrake(1e5, Number.NaN, 0)).toThrow(/coastBrake: u/);
     expect(() => coastBrake(1e5, 1, Number.POSITIVE_INFINITY)).toThrow(/coastBrake: throttle/);
@@ -423,9 +423,9 @@ describe('submarine helm, the stick pushed part way', () => {
     expect(d.helm.throttle).toBe(0.5);
     run(d, { ahead: true, drive: 0.2 }, 1);
     expect(d.helm.throttle).toBeCloseTo(0.2, 9);
-    // Astern from half ahead falls at the full throttle rate (2.5 / s): to -0.5 within 0.5 s.
+    // Astern from half ahead falls at the full throttle rate (2.5 / s): to full astern (-HELM.asternShare) within 0.5 s.
     run(d, { astern: true }, 0.5);
-    expect(d.helm.throttle).toBe(-0.5);
+    expect(d.helm.throttle).toBe(-HELM.asternShare);
   });
 });
 

@@ -62,4 +62,32 @@ describe('submarine speed control', () => {
     // The brake hint's model of a let-go (coastDistance) is the same glide, within 0.5 m.
     expect(Math.abs(coastDistance(free.mass, HELM.topSpeed, 1) - free.distance)).toBeLessThan(0.5);
   });
+
+  it('a beacon overshot by 15 m is backed onto (the hull 8 m off it, the ring) in under 2.6 s from a stop at full Astern (3.0 s at the old half speed astern, 4 m/s)', () => {
+    const world = createPhysicsWorld(submarine.worldOptions());
+    const h = submarine.build(world, { seed: 1, count: 0, fill: SUBMARINE_NEUTRAL_FILL, position: [0, -30] });
+    world.components.FluidRegion.surface.fill(0);
+    h.seabed.y.fill(-1000);
+    const helm = createHelmState(SUBMARINE_NEUTRAL_FILL);
+    const c = world.components,
+      e = h.hull;
+    for (let i = 0; i < 2 / world.dt; i++) {
+      steer(world, h, NO_INPUT, helm);
+      step(world);
+    }
+    // The beacon 15 m astern of the hull's centre: inside the ring (BEACON_CATCH 8 m) once the
+    // centre is within 8 m of it, the stern within about 2 m (half the hull, 6 m, nearer).
+    const x0 = c.Position.x[e]!;
+    let time = Number.NaN;
+    for (let i = 1; i <= 10 / world.dt; i++) {
+      steer(world, h, { ...NO_INPUT, astern: true }, helm);
+      step(world);
+      if (x0 - c.Position.x[e]! >= 15 - 8) {
+        time = i * world.dt;
+        break;
+      }
+    }
+    console.log(`backed 7 m onto a beacon 15 m astern in ${time.toFixed(2)} s, astern at ${(-c.Velocity.x[e]!).toFixed(1)} m/s`);
+    expect(time).toBeLessThan(2.6);
+  });
 });
