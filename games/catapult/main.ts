@@ -46,7 +46,7 @@ import {
   UPRIGHT_WATCH,
   uprightAimView,
   uprightCastleView,
-  uprightView as uprightViewOf,
+  uprightFollowView,
   type View,
   type WideViews,
   wideViews,
@@ -481,10 +481,8 @@ shell.onWorldChange(() => {
 
 /**
  * The camera has two views. The aim view: on a desktop (./camera wideViews) the field view, the
- * catapult and the whole castle with the ground a fifth of the way up, until the level's first
- * throw and while a pull is under way, and between throws the castle view, the castle and the
- * rock fitted to the play area's height (the whole field fitted to the width drew them in the
- * bottom fifth under empty sky); on a sideways phone the whole play area, from just behind the
+ * catapult and the whole castle with the ground a fifth of the way up (the shot view, the castle
+ * and the rock fitted to the play area's height, follows a throw and shows its verdict); on a sideways phone the whole play area, from just behind the
  * catapult to just past the rock, fitted to the screen's width (a drag aims from anywhere). The
  * shot view: after a throw, the castle and the rock with room for debris around them, where it is
  * closer than the aim view or elsewhere: the camera eases to it while the stone flies and back to
@@ -586,22 +584,19 @@ function deskViews(): WideViews {
   if (R > 0 && R < H) minY -= (R * (Math.max(lv.castleTop + PLAY_SKY, PLAY_TOP) - minY)) / (H - R);
   return wideViews(field(), W, H, minY);
 }
-/** The aim view (see above): upright, the catapult and the whole castle (./camera uprightAimView); on a desktop the rest view, or the drag view while a pull is under way. */
+/** The aim view (see above): upright, the catapult and the whole castle (./camera uprightAimView); on a desktop the whole field (./camera wideViews). */
 function aimView(): View {
   if (upright()) return uprightAimView(field(), renderer.camera.width, renderer.camera.height);
   if (desktop()) {
     const v = deskViews();
-    // The whole field while a pull is under way and until the level's first throw (the catapult and
-    // its target stay in view while a newcomer reads how to throw); else the castle, close.
-    return aim.active || shots.length === 0 ? v.field : v.castle;
+    // The whole field: the catapult and its target in view for the next throw. (The castle, close,
+    // is the shot view, while a throw is followed and its verdict read: resting on it between throws
+    // left the catapult off the screen until the next drag.)
+    return v.field;
   }
   // Room behind the catapult for its stones where the screen is wide enough.
   const behind = renderer.camera.width < NARROW ? 1.6 : 3.1;
   return viewFor(LAUNCH.x - behind, rockRight() + 0.6);
-}
-/** An upright phone's view of the span [minX, maxX], m, fitted to the screen's width (./camera uprightView). */
-function uprightView(minX: number, maxX: number): View {
-  return uprightViewOf(field(), minX, maxX, renderer.camera.width, renderer.camera.height);
 }
 /** Largest magnification of the castle's close-up (drawCloseUp): as wide as the phone's screen for most castles. */
 const CLOSE_MAX = 6;
@@ -631,6 +626,8 @@ const zoomsIn = (): boolean => {
  * The view while the stone flies: between the aim view (u = 0) and the shot view (u = 1),
  * u the share of the way from the catapult to the castle's front the stone has got (its farthest
  * x), and shifted where needed so the stone stays at least 15 % of the view's width inside it.
+ * Upright, close on the stone in flight (./camera uprightFollowView: fitted to the field a phone drew
+ * it 7 to 11 px across) until its verdict, then the whole castle.
  */
 function followView(): View {
   // (On a desktop from the drag view, where the throw was aimed.)
@@ -650,7 +647,10 @@ function followView(): View {
     return { minX: c - w / 2, minY: foot, maxX: c + w / 2, maxY: foot + (w * renderer.camera.height) / renderer.camera.width };
   }
   if (!upright()) return viewFor(c - w / 2, c + w / 2);
-  return uprightView(c - w / 2, c + w / 2);
+  // Upright, close on the stone (./camera uprightFollowView) until its verdict, then the whole castle.
+  if (lastThrow.verdict !== '' || !isAlive(shell.world, lastThrow.body)) return shotViewRect();
+  const [bx, by] = positionOf(lastThrow.body);
+  return uprightFollowView(field(), bx, by, renderer.camera.width, renderer.camera.height);
 }
 function frameCamera(): void {
   const cam = renderer.camera;
@@ -2191,12 +2191,16 @@ function draw(world: PhysicsWorld, alpha: number): void {
       const keys = touch
         ? 'Tap the button below for the next level, ↺ to try again'
         : 'Enter, L or the button below: next level   R: try again';
+      // In a player's words: the pieces that count for the stars, knocked down of all of them (not
+      // "9 down (darker), 4 welds broke": a weld is the engine's word, and the darker pieces are seen).
+      const c = countedDown(lv);
+      const knocked = `${c.down} of ${c.of} pieces knocked down`;
       const extra = bonus > 0 ? ` + ${bonus} for ${shotsLeft} ${shotsLeft === 1 ? 'shot' : 'shots'} left` : '';
       // Upright: the score's parts in brief, no star rule (the stars earned are on the first line),
       // and of the keys only the retry (the button names the next level).
       banner.text = brief
-        ? `Level ${params.level} cleared  ${stars}  Score ${score}\n${t.fallen} down (darker), ${t.broken} welds broke${bonus > 0 ? `, +${bonus} bonus` : ''}\nTotal ${total()}   ${touch ? '↺ to try again' : 'R: try again'}`
-        : `Level ${params.level} cleared  ${stars}\nScore ${score}: ${t.fallen} pieces down (darker), ${t.broken} welds broke${extra}   Total ${total()}\n${starRule}\n${keys}`;
+        ? `Level ${params.level} cleared  ${stars}  Score ${score}\n${knocked}${bonus > 0 ? `, +${bonus} for shots left` : ''}\nTotal ${total()}   ${touch ? '↺ to try again' : 'R: try again'}`
+        : `Level ${params.level} cleared  ${stars}\nScore ${score}: ${knocked}${extra}   Total ${total()}\n${starRule}\n${keys}`;
       showNext(true, `Level ${params.level + 1} ▶`);
     }
   } else {
@@ -2214,15 +2218,17 @@ function draw(world: PhysicsWorld, alpha: number): void {
       // shots left score a bonus only with three stars, so throwing them is never worth less).
       const earned = starsOf(downShare());
       const stars = '★'.repeat(earned) + '☆'.repeat(3 - earned);
-      const bonus = touch
-        ? 'Throw for ★ or move on'
-        : narrow
-          ? 'Throw for ★ or move on (Enter)'
-          : 'Throw again for more stars, or move on (Enter)';
-      banner.text = `Cleared!  ${stars}   ${bonus}\n${running}`;
+      // Plain words: what a throw does and what the button (or Enter) does ("Throw for ★ or move
+      // on" was hard to parse).
+      const next = params.level === LEVEL_COUNT ? 'finish' : 'next level';
+      const bonus = touch ? `Throw again for more stars, or tap ${next} ▶` : `Throw again for more stars, or press Enter: ${next}`;
+      banner.text = `Cleared with ${stars}!  ${bonus}\n${running}`;
       showNext(true, params.level === LEVEL_COUNT ? 'Finish ▶' : `Level ${params.level + 1} ▶`);
     } else {
-      banner.text = running;
+      // Once a throw's verdict is in, what to do next: the camera is back on the catapult.
+      const again =
+        shots.length > 0 && lastThrow.verdict !== '' && !aim.active ? `\n${touch ? 'Drag back anywhere' : 'Drag back'} to throw again` : '';
+      banner.text = running + again;
       showNext(false);
     }
   }
