@@ -51,6 +51,7 @@ import {
   type WideViews,
   wideViews,
 } from './camera';
+import { distanceMarks } from './distance';
 import { type DebrisKind, Effects } from './effects';
 import {
   CATAPULT,
@@ -1250,6 +1251,8 @@ const applyNext = (visible: boolean, text?: string): void => {
 };
 
 const overlay = new Graphics({ label: 'catapult' });
+/** The distance marks' labels ("5 m", "10 m", ...), one per mark of the level (./distance). */
+const distanceLayer = new Container({ label: 'distance marks' });
 const banner = new Text({
   text: '',
   style: {
@@ -1313,7 +1316,18 @@ const popupLayer = new Container({ label: 'popups' });
 effects = new Effects(popupLayer);
 // Past the ground's ends (no surface) bits fall on out of sight.
 effects.surface = (x) => Math.max(-50, surfaceAt(lv, x));
-renderer.root.addChild(overlay, effects.graphics, popupLayer, bannerPanel, banner, verdictText, offscreenText, castleText, pause.container);
+renderer.root.addChild(
+  overlay,
+  distanceLayer,
+  effects.graphics,
+  popupLayer,
+  bannerPanel,
+  banner,
+  verdictText,
+  offscreenText,
+  castleText,
+  pause.container,
+);
 
 /** Whether a stone sits in the cup: shots are left and the arm is back from its last throw. */
 function loaded(): boolean {
@@ -2086,6 +2100,46 @@ function drawRock(): void {
   overlay.poly(lit).fill({ color: 0xb3ab9e, alpha: 0.7 });
 }
 
+/**
+ * Draws the level's distance marks (./distance distanceMarks): a pale tick on the grass's edge and
+ * by it how far out it stands, at 11 px (13 on a wide screen): in the grass where it is 24 px deep or
+ * more, else over the tick (on a phone the castle's close-up lies in the earth just under the grass).
+ */
+function drawDistances(): void {
+  const cam = renderer.camera;
+  const marks = distanceMarks(lv);
+  const depth = cam.toScreenY(-1) - cam.toScreenY(0);
+  const size = cam.width < NARROW ? 11 : 13;
+  while (distanceLayer.children.length < marks.length)
+    distanceLayer.addChild(
+      new Text({
+        text: '',
+        style: {
+          fill: 0xffffff,
+          fontSize: size,
+          fontFamily: 'sans-serif',
+          fontWeight: 'bold',
+          stroke: { color: 0x000000, width: 3, join: 'round' },
+        },
+      }),
+    );
+  distanceLayer.children.forEach((c, i) => {
+    const label = c as Text,
+      m = marks[i];
+    label.visible = m !== undefined;
+    if (!m) return;
+    const x = cam.toScreenX(m.x),
+      y = cam.toScreenY(0),
+      inGrass = depth >= 24;
+    overlay.rect(x - 1, y - 6, 2, inGrass ? 6 + depth * 0.25 : 6).fill({ color: 0xffffff, alpha: 0.7 });
+    if (label.text !== m.label) label.text = m.label;
+    if (label.style.fontSize !== size) label.style.fontSize = size;
+    label.alpha = 0.85;
+    label.anchor.set(0.5, inGrass ? 0.5 : 1);
+    label.position.set(x, inGrass ? y + depth * 0.55 : y - 7);
+  });
+}
+
 function draw(world: PhysicsWorld, alpha: number): void {
   drawBackdrop(world);
   const cam = renderer.camera,
@@ -2110,6 +2164,7 @@ function draw(world: PhysicsWorld, alpha: number): void {
   drawRock();
   // The grass's top edge, lit, over the ground slab.
   overlay.rect(0, sy(0) - 1, cam.width, Math.max(2, cam.toScreenLength(0.12))).fill(0x76b852);
+  drawDistances();
   // The level's hill or pit over the flat ground.
   for (const t of lv.terrain) {
     if (t.kind === 'hill') drawHill(overlay, cam, t.minX, t.maxX, t.minY, t.maxY, 0x8a6238, 0x76b852);
