@@ -2275,10 +2275,12 @@ function draw(world: PhysicsWorld, alpha: number): void {
       const stars = '★'.repeat(earned) + '☆'.repeat(3 - earned);
       // Plain words: what a throw does and what the button (or Enter) does ("Throw for ★ or move
       // on" was hard to parse).
-      const next = params.level === LEVEL_COUNT ? 'finish' : 'next level';
-      const bonus = touch ? `Throw again for more stars, or tap ${next} ▶` : `Throw again for more stars, or press Enter: ${next}`;
+      const button = params.level === LEVEL_COUNT ? 'Finish ▶' : `Level ${params.level + 1} ▶`;
+      const bonus = touch
+        ? `Throw again for more stars, or tap ${button}`
+        : `Throw again for more stars, or press Enter: ${params.level === LEVEL_COUNT ? 'finish' : 'next level'}`;
       banner.text = `Cleared with ${stars}!  ${bonus}\n${running}`;
-      showNext(true, params.level === LEVEL_COUNT ? 'Finish ▶' : `Level ${params.level + 1} ▶`);
+      showNext(true, button);
     } else {
       // Once a throw's verdict is in, what to do next: the camera is back on the catapult.
       const again =
