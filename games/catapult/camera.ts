@@ -209,3 +209,29 @@ export function wideViews(f: Field, width: number, height: number, minY: number)
   const cw = Math.max(playW, c1 - c0);
   return { field: view(AIM_LEFT, fieldW), castle: view((c0 + c1 - cw) / 2, cw) };
 }
+
+/**
+ * Upright, the scale of the view that follows a stone in flight, px a metre: a 0.6 m stone 24 px
+ * across. Fitted to the whole field a 390 px phone draws 12 to 19 px a metre (a stone 7 to 11 px),
+ * and the castle's view 19 to 38.
+ */
+export const FOLLOW_PX_PER_M = 40;
+
+/**
+ * Upright, the view that follows a stone in flight at (x, y), m: FOLLOW_PX_PER_M (or the castle's
+ * view's scale where that is closer), the stone a fifth of the view's width left of its middle so
+ * what it flies at shows ahead of it, kept between AIM_LEFT and 1 m past the rock, the lowest
+ * surface where the other upright views put it and the whole view raised where the stone would
+ * otherwise be within 15 % of its top.
+ * @throws RangeError if the screen's size is not positive.
+ */
+export function uprightFollowView(f: Field, x: number, y: number, width: number, height: number): View {
+  if (!(width > 0 && height > 0)) throw new RangeError(`uprightFollowView: the screen must be > 0 px each way, got ${width} x ${height}`);
+  const right = rockRight(f.castleMaxX) + 1;
+  const castle = uprightCastleView(f, width, height);
+  const w = Math.min(width / FOLLOW_PX_PER_M, castle.maxX - castle.minX);
+  const minX = Math.min(Math.max(x - 0.3 * w, AIM_LEFT), right - w);
+  const v = uprightView(f, minX, minX + w, width, height, uprightGround(f, width, height));
+  const lift = Math.max(0, y - (v.maxY - 0.15 * (v.maxY - v.minY)));
+  return { minX: v.minX, minY: v.minY + lift, maxX: v.maxX, maxY: v.maxY + lift };
+}

@@ -46,11 +46,12 @@ import {
   UPRIGHT_WATCH,
   uprightAimView,
   uprightCastleView,
-  uprightView as uprightViewOf,
+  uprightFollowView,
   type View,
   type WideViews,
   wideViews,
 } from './camera';
+import { distanceMarks } from './distance';
 import { type DebrisKind, Effects } from './effects';
 import {
   CATAPULT,
@@ -481,10 +482,8 @@ shell.onWorldChange(() => {
 
 /**
  * The camera has two views. The aim view: on a desktop (./camera wideViews) the field view, the
- * catapult and the whole castle with the ground a fifth of the way up, until the level's first
- * throw and while a pull is under way, and between throws the castle view, the castle and the
- * rock fitted to the play area's height (the whole field fitted to the width drew them in the
- * bottom fifth under empty sky); on a sideways phone the whole play area, from just behind the
+ * catapult and the whole castle with the ground a fifth of the way up (the shot view, the castle
+ * and the rock fitted to the play area's height, follows a throw and shows its verdict); on a sideways phone the whole play area, from just behind the
  * catapult to just past the rock, fitted to the screen's width (a drag aims from anywhere). The
  * shot view: after a throw, the castle and the rock with room for debris around them, where it is
  * closer than the aim view or elsewhere: the camera eases to it while the stone flies and back to
@@ -586,22 +585,19 @@ function deskViews(): WideViews {
   if (R > 0 && R < H) minY -= (R * (Math.max(lv.castleTop + PLAY_SKY, PLAY_TOP) - minY)) / (H - R);
   return wideViews(field(), W, H, minY);
 }
-/** The aim view (see above): upright, the catapult and the whole castle (./camera uprightAimView); on a desktop the rest view, or the drag view while a pull is under way. */
+/** The aim view (see above): upright, the catapult and the whole castle (./camera uprightAimView); on a desktop the whole field (./camera wideViews). */
 function aimView(): View {
   if (upright()) return uprightAimView(field(), renderer.camera.width, renderer.camera.height);
   if (desktop()) {
     const v = deskViews();
-    // The whole field while a pull is under way and until the level's first throw (the catapult and
-    // its target stay in view while a newcomer reads how to throw); else the castle, close.
-    return aim.active || shots.length === 0 ? v.field : v.castle;
+    // The whole field: the catapult and its target in view for the next throw. (The castle, close,
+    // is the shot view, while a throw is followed and its verdict read: resting on it between throws
+    // left the catapult off the screen until the next drag.)
+    return v.field;
   }
   // Room behind the catapult for its stones where the screen is wide enough.
   const behind = renderer.camera.width < NARROW ? 1.6 : 3.1;
   return viewFor(LAUNCH.x - behind, rockRight() + 0.6);
-}
-/** An upright phone's view of the span [minX, maxX], m, fitted to the screen's width (./camera uprightView). */
-function uprightView(minX: number, maxX: number): View {
-  return uprightViewOf(field(), minX, maxX, renderer.camera.width, renderer.camera.height);
 }
 /** Largest magnification of the castle's close-up (drawCloseUp): as wide as the phone's screen for most castles. */
 const CLOSE_MAX = 6;
@@ -631,6 +627,8 @@ const zoomsIn = (): boolean => {
  * The view while the stone flies: between the aim view (u = 0) and the shot view (u = 1),
  * u the share of the way from the catapult to the castle's front the stone has got (its farthest
  * x), and shifted where needed so the stone stays at least 15 % of the view's width inside it.
+ * Upright, close on the stone in flight (./camera uprightFollowView: fitted to the field a phone drew
+ * it 7 to 11 px across) until its verdict, then the whole castle.
  */
 function followView(): View {
   // (On a desktop from the drag view, where the throw was aimed.)
@@ -650,7 +648,10 @@ function followView(): View {
     return { minX: c - w / 2, minY: foot, maxX: c + w / 2, maxY: foot + (w * renderer.camera.height) / renderer.camera.width };
   }
   if (!upright()) return viewFor(c - w / 2, c + w / 2);
-  return uprightView(c - w / 2, c + w / 2);
+  // Upright, close on the stone (./camera uprightFollowView) until its verdict, then the whole castle.
+  if (lastThrow.verdict !== '' || !isAlive(shell.world, lastThrow.body)) return shotViewRect();
+  const [bx, by] = positionOf(lastThrow.body);
+  return uprightFollowView(field(), bx, by, renderer.camera.width, renderer.camera.height);
 }
 function frameCamera(): void {
   const cam = renderer.camera;
@@ -1250,6 +1251,8 @@ const applyNext = (visible: boolean, text?: string): void => {
 };
 
 const overlay = new Graphics({ label: 'catapult' });
+/** The distance marks' labels ("5 m", "10 m", ...), one per mark of the level (./distance). */
+const distanceLayer = new Container({ label: 'distance marks' });
 const banner = new Text({
   text: '',
   style: {
@@ -1313,7 +1316,18 @@ const popupLayer = new Container({ label: 'popups' });
 effects = new Effects(popupLayer);
 // Past the ground's ends (no surface) bits fall on out of sight.
 effects.surface = (x) => Math.max(-50, surfaceAt(lv, x));
-renderer.root.addChild(overlay, effects.graphics, popupLayer, bannerPanel, banner, verdictText, offscreenText, castleText, pause.container);
+renderer.root.addChild(
+  overlay,
+  distanceLayer,
+  effects.graphics,
+  popupLayer,
+  bannerPanel,
+  banner,
+  verdictText,
+  offscreenText,
+  castleText,
+  pause.container,
+);
 
 /** Whether a stone sits in the cup: shots are left and the arm is back from its last throw. */
 function loaded(): boolean {
@@ -2086,6 +2100,46 @@ function drawRock(): void {
   overlay.poly(lit).fill({ color: 0xb3ab9e, alpha: 0.7 });
 }
 
+/**
+ * Draws the level's distance marks (./distance distanceMarks): a pale tick on the grass's edge and
+ * by it how far out it stands, at 11 px (13 on a wide screen): in the grass where it is 24 px deep or
+ * more, else over the tick (on a phone the castle's close-up lies in the earth just under the grass).
+ */
+function drawDistances(): void {
+  const cam = renderer.camera;
+  const marks = distanceMarks(lv);
+  const depth = cam.toScreenY(-1) - cam.toScreenY(0);
+  const size = cam.width < NARROW ? 11 : 13;
+  while (distanceLayer.children.length < marks.length)
+    distanceLayer.addChild(
+      new Text({
+        text: '',
+        style: {
+          fill: 0xffffff,
+          fontSize: size,
+          fontFamily: 'sans-serif',
+          fontWeight: 'bold',
+          stroke: { color: 0x000000, width: 3, join: 'round' },
+        },
+      }),
+    );
+  distanceLayer.children.forEach((c, i) => {
+    const label = c as Text,
+      m = marks[i];
+    label.visible = m !== undefined;
+    if (!m) return;
+    const x = cam.toScreenX(m.x),
+      y = cam.toScreenY(0),
+      inGrass = depth >= 24;
+    overlay.rect(x - 1, y - 6, 2, inGrass ? 6 + depth * 0.25 : 6).fill({ color: 0xffffff, alpha: 0.7 });
+    if (label.text !== m.label) label.text = m.label;
+    if (label.style.fontSize !== size) label.style.fontSize = size;
+    label.alpha = 0.85;
+    label.anchor.set(0.5, inGrass ? 0.5 : 1);
+    label.position.set(x, inGrass ? y + depth * 0.55 : y - 7);
+  });
+}
+
 function draw(world: PhysicsWorld, alpha: number): void {
   drawBackdrop(world);
   const cam = renderer.camera,
@@ -2110,6 +2164,7 @@ function draw(world: PhysicsWorld, alpha: number): void {
   drawRock();
   // The grass's top edge, lit, over the ground slab.
   overlay.rect(0, sy(0) - 1, cam.width, Math.max(2, cam.toScreenLength(0.12))).fill(0x76b852);
+  drawDistances();
   // The level's hill or pit over the flat ground.
   for (const t of lv.terrain) {
     if (t.kind === 'hill') drawHill(overlay, cam, t.minX, t.maxX, t.minY, t.maxY, 0x8a6238, 0x76b852);
@@ -2191,12 +2246,16 @@ function draw(world: PhysicsWorld, alpha: number): void {
       const keys = touch
         ? 'Tap the button below for the next level, ↺ to try again'
         : 'Enter, L or the button below: next level   R: try again';
+      // In a player's words: the pieces that count for the stars, knocked down of all of them (not
+      // "9 down (darker), 4 welds broke": a weld is the engine's word, and the darker pieces are seen).
+      const c = countedDown(lv);
+      const knocked = `${c.down} of ${c.of} pieces knocked down`;
       const extra = bonus > 0 ? ` + ${bonus} for ${shotsLeft} ${shotsLeft === 1 ? 'shot' : 'shots'} left` : '';
       // Upright: the score's parts in brief, no star rule (the stars earned are on the first line),
       // and of the keys only the retry (the button names the next level).
       banner.text = brief
-        ? `Level ${params.level} cleared  ${stars}  Score ${score}\n${t.fallen} down (darker), ${t.broken} welds broke${bonus > 0 ? `, +${bonus} bonus` : ''}\nTotal ${total()}   ${touch ? '↺ to try again' : 'R: try again'}`
-        : `Level ${params.level} cleared  ${stars}\nScore ${score}: ${t.fallen} pieces down (darker), ${t.broken} welds broke${extra}   Total ${total()}\n${starRule}\n${keys}`;
+        ? `Level ${params.level} cleared  ${stars}  Score ${score}\n${knocked}${bonus > 0 ? `, +${bonus} for shots left` : ''}\nTotal ${total()}   ${touch ? '↺ to try again' : 'R: try again'}`
+        : `Level ${params.level} cleared  ${stars}\nScore ${score}: ${knocked}${extra}   Total ${total()}\n${starRule}\n${keys}`;
       showNext(true, `Level ${params.level + 1} ▶`);
     }
   } else {
@@ -2214,15 +2273,19 @@ function draw(world: PhysicsWorld, alpha: number): void {
       // shots left score a bonus only with three stars, so throwing them is never worth less).
       const earned = starsOf(downShare());
       const stars = '★'.repeat(earned) + '☆'.repeat(3 - earned);
+      // Plain words: what a throw does and what the button (or Enter) does ("Throw for ★ or move
+      // on" was hard to parse).
+      const button = params.level === LEVEL_COUNT ? 'Finish ▶' : `Level ${params.level + 1} ▶`;
       const bonus = touch
-        ? 'Throw for ★ or move on'
-        : narrow
-          ? 'Throw for ★ or move on (Enter)'
-          : 'Throw again for more stars, or move on (Enter)';
-      banner.text = `Cleared!  ${stars}   ${bonus}\n${running}`;
-      showNext(true, params.level === LEVEL_COUNT ? 'Finish ▶' : `Level ${params.level + 1} ▶`);
+        ? `Throw again for more stars, or tap ${button}`
+        : `Throw again for more stars, or press Enter: ${params.level === LEVEL_COUNT ? 'finish' : 'next level'}`;
+      banner.text = `Cleared with ${stars}!  ${bonus}\n${running}`;
+      showNext(true, button);
     } else {
-      banner.text = running;
+      // Once a throw's verdict is in, what to do next: the camera is back on the catapult.
+      const again =
+        shots.length > 0 && lastThrow.verdict !== '' && !aim.active ? `\n${touch ? 'Drag back anywhere' : 'Drag back'} to throw again` : '';
+      banner.text = running + again;
       showNext(false);
     }
   }

@@ -789,9 +789,23 @@ describe('catapult', () => {
     const three = t.share >= 0.95;
     const next = g.page.getByRole('button', { name: /Level 2/ });
     await next.waitFor({ state: 'visible' });
-    expect(await g.page.evaluate(() => (window.game as unknown as { bannerText(): string }).bannerText())).toContain(
-      three ? 'Enter, L or the button below: next level' : '(Enter)',
-    );
+    const said = await g.page.evaluate(() => (window.game as unknown as { bannerText(): string }).bannerText());
+    expect(said).toContain(three ? 'Enter, L or the button below: next level' : 'or press Enter: next level');
+    // In a player's words: pieces knocked down of how many, and what another throw is for (a stranger
+    // could not parse "9 down (darker), 4 welds broke" nor "Throw for ★ or move on").
+    expect(said).toContain(three ? 'pieces knocked down' : 'Throw again for more stars');
+    expect(said).not.toMatch(/weld|darker|move on|Throw for ★/);
+    // Once the verdict has been read (VERDICT_READ, 2.5 s of game time after it), the camera is back
+    // on the whole field, the catapult on the screen for the next throw (resting on the castle left
+    // the catapult off the screen until the next drag): its arm (x = 0 to 1.1 m) at least 20 px in.
+    // (With three stars the level has ended and its wreck stays in view.)
+    await g.page.evaluate(() => (window.game as unknown as CatapultGame).advance(200));
+    const back = await g.waitFor(() => {
+      const w = window.game as unknown as { cameraSettled(): boolean; renderer: { camera: Cam & { width: number } } };
+      const cam = w.renderer.camera;
+      return w.cameraSettled() ? { left: cam.toScreenX(0), right: cam.toScreenX(1.1), W: cam.width } : null;
+    }, null);
+    if (!three) expect([back.left > 20, back.right < back.W - 20], JSON.stringify(back)).toEqual([true, true]);
     await g.page.keyboard.press('Enter');
     await g.waitFor(() => (window.game as unknown as CatapultGame).params.level === 2, null);
     const campaign = await g.page.evaluate(() => (window.game as unknown as CatapultGame).campaign);

@@ -10,17 +10,20 @@ import { createPhysicsWorld } from '@bitphysics/physics';
 import { describe, expect, it } from 'vitest';
 import {
   AIM_CLOSE_PX_PER_M,
+  AIM_LEFT,
   aimCloseUp,
   type CameraInput,
   cameraShot,
   FIELD_GROUND,
   type Field,
+  FOLLOW_PX_PER_M,
   PLAY_SKY,
   rockRight,
   UPRIGHT_GROUND,
   UPRIGHT_GROUND_CLOSE,
   uprightAimView,
   uprightCastleView,
+  uprightFollowView,
   uprightView,
   type View,
   wideViews,
@@ -165,9 +168,53 @@ describe('catapult camera', () => {
     );
   });
 
+  it('upright 390 x 844 on every level: the view following a stone draws it 24 px across and keeps it in view, the castle ahead', () => {
+    const [W, H] = [390, 844];
+    for (let level = 0; level < LEVEL_COUNT; level++) {
+      const w = createPhysicsWorld(worldOptions({ gravity: 9.81 }));
+      const lv = buildLevel(w, { level, seed: 1, gravity: 9.81, jointStrength: 400 });
+      const f: Field = {
+        castleMinX: lv.castleMinX,
+        castleMaxX: lv.castleMaxX,
+        castleTop: lv.castleTop,
+        floor: Math.min(0, ...lv.terrain.map((t) => t.maxY)),
+      };
+      const aimPerM = W / (uprightAimView(f, W, H).maxX - uprightAimView(f, W, H).minX);
+      // Drag-free arcs from the catapult to the castle's middle: a 45 degree throw and a 65 degree lob.
+      const R = (f.castleMinX + f.castleMaxX) / 2 - LAUNCH.x;
+      for (const deg of [45, 65]) {
+        const th = (deg * Math.PI) / 180,
+          v = Math.sqrt((9.81 * R) / Math.sin(2 * th));
+        for (let t = 0; ; t += 0.05) {
+          const x = LAUNCH.x + v * Math.cos(th) * t,
+            y = LAUNCH.y + v * Math.sin(th) * t - 4.9 * t * t;
+          if (y < 0 || x > f.castleMaxX) break;
+          const view = uprightFollowView(f, x, y, W, H);
+          const wide = view.maxX - view.minX,
+            tall = view.maxY - view.minY;
+          const at = `level ${level + 1} ${deg} deg t ${t.toFixed(2)} s`;
+          // The screen's aspect; FOLLOW_PX_PER_M (a 0.6 m stone 24 px), over 1.9 x the aim view's
+          // 12 to 19 px a metre (the stone was 7 to 11 px across there).
+          expect(tall / wide, at).toBeCloseTo(H / W, 6);
+          expect(W / wide, at).toBeCloseTo(FOLLOW_PX_PER_M, 6);
+          expect(W / wide, at).toBeGreaterThan(1.9 * aimPerM);
+          // The stone inside, 15 % of the view from each edge (left of the middle: the castle ahead).
+          expect((x - view.minX) / wide, at).toBeGreaterThanOrEqual(0.15);
+          expect((view.maxX - x) / wide, at).toBeGreaterThanOrEqual(0.5);
+          expect((view.maxY - y) / tall, at).toBeGreaterThanOrEqual(0.15 - 1e-9);
+          expect(view.minY, at).toBeLessThan(f.floor);
+          // Never past the catapult's stones nor 1 m past the rock.
+          expect(view.minX, at).toBeGreaterThanOrEqual(AIM_LEFT - 1e-9);
+          expect(view.maxX, at).toBeLessThanOrEqual(rockRight(f.castleMaxX) + 1 + 1e-9);
+        }
+      }
+    }
+  });
+
   it('rejects bad input, naming the function and the value', () => {
     const f: Field = { castleMinX: 10, castleMaxX: 14, castleTop: 3, floor: 0 };
     expect(() => uprightView(f, 5, 5, 390, 844)).toThrow(/uprightView: maxX .* got 5/);
     expect(() => uprightView(f, 0, 10, 0, 844)).toThrow(/uprightView: the screen .* got 0 x 844/);
+    expect(() => uprightFollowView(f, 0, 1, 390, 0)).toThrow(/uprightFollowView: the screen .* got 390 x 0/);
   });
 });
