@@ -1903,7 +1903,7 @@ function swingAt(piece: number, aim?: SwingRequest): boolean {
   }
   const before = aimed;
   // A tap during a wind-up re-aims that swing.
-  retargeted = before !== 0 && moves.length > 0;
+  retargeted = before !== 0 && (moves.length > 0 || handles.controls.pull?.again === true);
   if (retargeted && before !== piece && isAlive(shell.world, before)) {
     const P = shell.world.components.Position;
     dropMarks(P.x[before]!, P.z[before]!);
@@ -2548,7 +2548,9 @@ function frame(): void {
   cablePositions[5] = hp[2]!;
   cableGeometry.attributes.position!.needsUpdate = true;
   const goal = handles.controls.goal;
-  const swinging = handles.controls.moves.length > 0 && aimed !== 0 && isAlive(shell.world, aimed);
+  // (A swing let go while the tagline still draws the ball back is on its way too.)
+  const swinging =
+    (handles.controls.moves.length > 0 || handles.controls.pull?.letGo === true) && aimed !== 0 && isAlive(shell.world, aimed);
   goalMarker.visible = goal !== null || swinging;
   // A swing's ring is wide enough to show round the foot of a tower or a crib.
   goalMarker.scale.setScalar(goal === null && swinging ? 2.6 : 1);
@@ -2625,6 +2627,9 @@ function swayHint(): string {
  */
 function swingPhase(): string {
   const moves = handles.controls.moves;
+  // Let go while the tagline draws the ball back: the line slips as soon as the ball is in place.
+  if (moves.length === 0 && handles.controls.pull?.letGo === true && handles.controls.pull.offset > 0)
+    return ` · ${retargeted ? 'new target, same swing' : 'drawing the ball back'}…`;
   if (moves.length === 0) return '';
   if (moves[0]!.run) {
     retargeted = false;

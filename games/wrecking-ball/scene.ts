@@ -1147,6 +1147,8 @@ export interface PullBack {
   letGo: boolean;
   /** Seconds since the player let go with the hook in place (see PULL_WAIT). */
   waited: number;
+  /** Whether it re-aims a swing already let go whose run has not begun (the same swing, aimed anew). */
+  again: boolean;
   /** Where the follow-through after the hit takes the hook (m, x and z; see FOLLOW_SPEED). */
   followX: number;
   followZ: number;
@@ -1218,7 +1220,9 @@ export function pullBack(world: PhysicsWorld, h: WreckingBallHandles, piece: num
   while (offset > 0.3 && segmentToAxis(x, z, x - offset * ux, z - offset * uz) < MAST_CLEAR) offset -= 0.1;
   const d = Math.round(((request.direction / (2 * Math.PI)) * APPROACH_DIRECTIONS + APPROACH_DIRECTIONS) % APPROACH_DIRECTIONS);
   const [followX, followZ] = followEnd(world, structure, x, z, tx, tz, d);
-  h.controls.pull = { piece, x, z, height, ux, uz, offset, letGo: false, waited: 0, followX, followZ };
+  const old = h.controls.pull;
+  const again = old !== null && old.offset > 0 && (old.letGo || old.again);
+  h.controls.pull = { piece, x, z, height, ux, uz, offset, letGo: false, waited: 0, again, followX, followZ };
   h.controls.moves = [];
   h.controls.swing = null;
   h.controls.goal = null;
