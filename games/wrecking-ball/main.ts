@@ -10,8 +10,10 @@
  * Keys: A/D or ←/→ slew, W/S or ↑/↓ trolley out/in, Q/E hook up/down, L next level (once cleared),
  * G debug layer (joints, contacts), P pause, N step, R reset. Mouse: press a target and drag back
  * as with a sling, then let go: the ball swings into it along the arrow shown on the ground, harder
- * the longer the pull (the crane winds up and runs through; one aimed at another target during the
- * wind-up re-aims that swing, one during the run is swung at next); a click without a drag shows
+ * the longer the pull (while the drag is held the crane takes the hook over the target and a tagline
+ * draws the ball back opposite the arrow; let go, the line slips and the ball swings down into the
+ * target; one aimed at another target first re-aims that swing, one during the run is swung at
+ * next); a click without a drag shows
  * the arrow from where the ball hangs, a second click swings along it (on a touch screen, with a
  * target so marked, a drag from open ground aims at it too: the finger need not cover it). A press
  * on the ground beside a target aims at it, elsewhere sends the hook there; drag the ball to pull it; right-drag orbits,
@@ -87,14 +89,17 @@ import {
   clearScore,
   clearScoreLine,
   clearTarget,
+  dropPull,
   FULL_POWER_SHOWN,
   fallenCount,
   HANG,
   hookPosition,
   JIB_HEIGHT,
   LINK_RADIUS,
+  letGoPull,
   pieceOnSwing,
   powerWords,
+  pullBack,
   RADIUS_RANGE,
   type SwingRequest,
   scorePieces,
@@ -985,6 +990,30 @@ function placeSegment(i: number): void {
     chainRings.setMatrixAt(k, partMatrix.compose(ringPos, ringTurn, partScale));
   }
 }
+// The tagline that draws the ball back while a drag is held (./scene pullBack): a taut orange line
+// from the ball's far side down to its winch's anchor on the ground behind it, so the pull the
+// player makes is seen holding the ball, and gone the moment it slips.
+const taglineMaterial = new MeshBasicMaterial({ color: 0xff7a1a });
+const tagline = new Mesh(chainGeometry, taglineMaterial);
+tagline.visible = false;
+app.scene.add(tagline);
+/** How far behind the held ball across the ground the tagline's anchor is, m. */
+const TAGLINE_BACK = 3;
+const taglineFrom = new Vector3(),
+  taglineTo = new Vector3();
+/** Places the tagline while the ball is drawn back (hidden otherwise). */
+function drawTagline(): void {
+  const pull = handles.controls.pull;
+  tagline.visible = pull !== null && pull.offset > 0;
+  if (!tagline.visible || pull === null) return;
+  taglineFrom.set(ballAt[0]! - BALL_RADIUS * pull.ux, ballAt[1]!, ballAt[2]! - BALL_RADIUS * pull.uz);
+  taglineTo.set(ballAt[0]! - TAGLINE_BACK * pull.ux, 0, ballAt[2]! - TAGLINE_BACK * pull.uz);
+  chainDir.subVectors(taglineTo, taglineFrom);
+  const length = chainDir.length();
+  tagline.position.addVectors(taglineFrom, taglineTo).multiplyScalar(0.5);
+  tagline.quaternion.setFromUnitVectors(chainUp, chainDir.divideScalar(length));
+  tagline.scale.set(0.035, length, 0.035);
+}
 /**
  * Draws the chain: CHAIN_LINKS + 1 equal segments on the straight line from the hook to the point of
  * the ball's surface toward it. The rope from the hook to the ball carries the 5.4 t load (see
@@ -1458,6 +1487,8 @@ function pressAt(ndcX: number, ndcY: number, deferHook = false): 'ball' | 'aim' 
     if (outOfSwings()) return 'none';
     drag.grab(ndcX, ndcY, app.camera);
     if (drag.body !== handles.ball) return 'none';
+    // The hand takes the ball from the tagline.
+    handles.controls.pull = null;
     dragPlane.constant = -drag.target[1];
     const P = shell.world.components.Position;
     grabOffset[0] = drag.target[0] - P.x[handles.ball]!;
@@ -1507,6 +1538,7 @@ let pendingHook: [number, number] | null = null;
 /** Sends the hook to the ground point (x, z), m, dropping any swing planned or saved. */
 function sendHook(x: number, z: number): void {
   handles.controls.moves = [];
+  handles.controls.pull = null;
   next.piece = 0;
   handles.controls.goal = [x, z];
   aimed = 0;
@@ -1603,6 +1635,11 @@ function aimDrag(ndcX: number, ndcY: number): void {
   if (raycaster.ray.intersectPlane(ground, groundHit) !== null && Math.hypot(groundHit.x - fromX, groundHit.z - fromZ) > 0.2)
     aiming.direction = Math.atan2(fromZ - groundHit.z, fromX - groundHit.x);
   aiming.power = Math.min(1, Math.max(MIN_POWER, pull / FULL_PULL_PX));
+  // While the drag is held the crane takes the hook over the piece and a tagline draws the ball
+  // back as the arrow shows, so letting go swings it from there (./scene pullBack): the hit comes
+  // about a quarter of the chain's swing after the finger lifts. Not while the ball is on its run
+  // (the drag is the next swing, planned once the run is over) or the level's swings are used.
+  if (!onRun() && !outOfSwings() && next.piece === 0 && drag.body === 0) pullBack(shell.world, handles, aiming.piece, request());
 }
 /**
  * The press being aimed let go at (ndcX, ndcY): after a drag, swings along the arrow; a tap on the
@@ -1629,7 +1666,10 @@ function releaseAt(ndcX: number, ndcY: number): 'swing' | 'armed' | 'none' {
     return 'armed';
   }
   aiming.armed = 0;
-  return swingAt(piece, request()) ? 'swing' : 'none';
+  const swung = swingAt(piece, request());
+  // A drag let go without a swing (refused, or kept as the next one): the tagline pays out.
+  if (handles.controls.pull !== null && !handles.controls.pull.letGo) dropPull(handles);
+  return swung ? 'swing' : 'none';
 }
 // The arrow on the ground: from where the ball comes, to the piece; longer and redder the harder.
 // Drawn over everything (the mast or a structure in front of it would hide it), in a bright fill
@@ -1831,7 +1871,7 @@ function onRun(): boolean {
  * fallen meanwhile is let go. Called every step.
  */
 function fireNext(): void {
-  if (next.piece === 0 || handles.controls.moves.length > 0) return;
+  if (next.piece === 0 || handles.controls.moves.length > 0 || handles.controls.pull !== null) return;
   const piece = next.piece;
   const request = next.request;
   next.piece = 0;
@@ -1863,7 +1903,7 @@ function swingAt(piece: number, aim?: SwingRequest): boolean {
   }
   const before = aimed;
   // A tap during a wind-up re-aims that swing.
-  retargeted = before !== 0 && moves.length > 0;
+  retargeted = before !== 0 && (moves.length > 0 || handles.controls.pull?.again === true);
   if (retargeted && before !== piece && isAlive(shell.world, before)) {
     const P = shell.world.components.Position;
     dropMarks(P.x[before]!, P.z[before]!);
@@ -1872,7 +1912,13 @@ function swingAt(piece: number, aim?: SwingRequest): boolean {
   // A swing whose result was not counted yet (its run over, the dust settling; or a next swing
   // begun the moment the run ended) is counted now.
   if (runEndedAt >= 0 || (swing.pending && !retargeted)) countResult();
-  aimAt(shell.world, handles, piece, aim);
+  // A drag held at this piece drew the ball back (aimDrag): letting go swings it from there; else
+  // the crane plans the swing (a tap, or a swing kept for after a run).
+  const pull = handles.controls.pull;
+  if (pull !== null && pull.piece === piece && !pull.letGo && aim !== undefined) {
+    pullBack(shell.world, handles, piece, aim);
+    letGoPull(handles);
+  } else aimAt(shell.world, handles, piece, aim);
   light(piece);
   aimed = piece;
   swing.downBefore = fallenCount(handles.pieces);
@@ -1901,6 +1947,7 @@ function cancelPress(): void {
   aiming.piece = 0;
   aiming.remote = false;
   pendingHook = null;
+  if (handles.controls.pull !== null && !handles.controls.pull.letGo) dropPull(handles);
   if (drag.body === handles.ball && drag.body !== 0) {
     drag.release();
     handles.controls.released = Math.max(0, handles.controls.released - 1);
@@ -1997,8 +2044,10 @@ const up = (event: PointerEvent): void => {
   pressId = -1;
   const hook = pendingHook;
   pendingHook = null;
-  if (event.type === 'pointercancel') aiming.piece = 0;
-  else if (hook) sendHook(hook[0], hook[1]);
+  if (event.type === 'pointercancel') {
+    aiming.piece = 0;
+    if (handles.controls.pull !== null && !handles.controls.pull.letGo) dropPull(handles);
+  } else if (hook) sendHook(hook[0], hook[1]);
   if (aiming.piece !== 0) {
     app.toNdc(event.clientX, event.clientY, ndc);
     releaseAt(ndc[0], ndc[1]);
@@ -2488,6 +2537,7 @@ function frame(): void {
   if (groundShadows.visible) placeGroundShadows();
   const hp = renderer.drawnPosition(handles.trolley, hookAt) ?? hookPosition(c);
   drawChain(hp);
+  drawTagline();
   if (renderer.drawnPosition(handles.ball, ballAt)) placeCues(ballAt, hp);
   followAction();
   cablePositions[0] = hp[0]!;
@@ -2498,7 +2548,9 @@ function frame(): void {
   cablePositions[5] = hp[2]!;
   cableGeometry.attributes.position!.needsUpdate = true;
   const goal = handles.controls.goal;
-  const swinging = handles.controls.moves.length > 0 && aimed !== 0 && isAlive(shell.world, aimed);
+  // (A swing let go while the tagline still draws the ball back is on its way too.)
+  const swinging =
+    (handles.controls.moves.length > 0 || handles.controls.pull?.letGo === true) && aimed !== 0 && isAlive(shell.world, aimed);
   goalMarker.visible = goal !== null || swinging;
   // A swing's ring is wide enough to show round the foot of a tower or a crib.
   goalMarker.scale.setScalar(goal === null && swinging ? 2.6 : 1);
@@ -2530,7 +2582,8 @@ function frame(): void {
     (oldRing.material as MeshBasicMaterial).opacity = 0.85 * (1 - faded);
   } else slide.at = -1;
   // Once a swing's run is over, what it did: how many pieces it brought down, said for RESULT_SHOWN s.
-  if (aimed !== 0 && handles.controls.moves.length === 0 && swing.pending && runEndedAt < 0) runEndedAt = shell.world.time;
+  if (aimed !== 0 && handles.controls.moves.length === 0 && handles.controls.pull === null && swing.pending && runEndedAt < 0)
+    runEndedAt = shell.world.time;
   if (runEndedAt >= 0 && shell.world.time - runEndedAt > 1.5) countResult();
   if (frames++ % 6 === 0) {
     const n = handles.pieces.length,
@@ -2574,6 +2627,9 @@ function swayHint(): string {
  */
 function swingPhase(): string {
   const moves = handles.controls.moves;
+  // Let go while the tagline draws the ball back: the line slips as soon as the ball is in place.
+  if (moves.length === 0 && handles.controls.pull?.letGo === true && handles.controls.pull.offset > 0)
+    return ` · ${retargeted ? 'new target, same swing' : 'drawing the ball back'}…`;
   if (moves.length === 0) return '';
   if (moves[0]!.run) {
     retargeted = false;

@@ -160,6 +160,12 @@ export interface CraneControls {
    * re-aimed during its wind-up (`aimAt` again) has not been taken and is not counted.
    */
   released: number;
+  /**
+   * The tagline holding the ball back for the player's swing (see `pullBack`), or null: while set,
+   * the crane runs the hook over the piece and the line draws the ball back along its chain's arc;
+   * once let go, and ready, the line slips and the ball swings down from there on to the piece.
+   */
+  pull: PullBack | null;
 }
 
 /** One timed move of the crane (see `CraneControls.moves`). */
@@ -409,7 +415,17 @@ export function buildWreckingBall(world: PhysicsWorld, options: WreckingBallOpti
   };
   for (const v of [crane.angle, crane.radius, crane.height])
     if (!Number.isFinite(v)) throw new RangeError(`buildWreckingBall: crane must hold finite numbers, got ${JSON.stringify(at)}`);
-  const controls: CraneControls = { slew: 0, trolley: 0, hoist: 0, steady: false, goal: null, moves: [], swing: null, released: 0 };
+  const controls: CraneControls = {
+    slew: 0,
+    trolley: 0,
+    hoist: 0,
+    steady: false,
+    goal: null,
+    moves: [],
+    swing: null,
+    released: 0,
+    pull: null,
+  };
   const [hx, hy, hz] = hookPosition(crane);
   const trolley = addBody(world, { position: [hx, hy, hz], kinematic: true, orientation: [0, 0, 0, 1] });
   // The chain hangs straight down from the hook; links are joined end to end.
@@ -1017,6 +1033,7 @@ export function aimAt(world: PhysicsWorld, h: WreckingBallHandles, piece: number
     }
   });
   h.controls.goal = null;
+  h.controls.pull = null;
   const legs = best[chosen];
   if (legs === undefined || legs === null) {
     // No plan within the crane's rates (not met inside the jib's reach): straight to the piece.
@@ -1110,6 +1127,227 @@ export function swayAmplitude(world: PhysicsWorld, h: WreckingBallHandles): numb
 }
 
 /**
+ * The tagline of the player's swing (`CraneControls.pull`, see `pullBack`): the hook's goal over
+ * the piece, how far back along the ball's travel the line draws the ball from under the hook,
+ * and whether the player has let go.
+ */
+export interface PullBack {
+  /** The piece aimed at. */
+  piece: number;
+  /** Where the hook goes (m, x and z): over the strike point; its height there, m. */
+  x: number;
+  z: number;
+  height: number;
+  /** The ball's travel across the ground as it meets the piece, unit vector (x, z). */
+  ux: number;
+  uz: number;
+  /** How far across the ground, m, the line draws the ball back from under the hook (0: paying out, no swing). */
+  offset: number;
+  /** Whether the player let go: the line slips as soon as the hook and the ball are in place (`pullReady`). */
+  letGo: boolean;
+  /** Seconds since the player let go with the hook in place (see PULL_WAIT). */
+  waited: number;
+  /** Whether it re-aims a swing already let go whose run has not begun (the same swing, aimed anew). */
+  again: boolean;
+  /** Where the follow-through after the hit takes the hook (m, x and z; see FOLLOW_SPEED). */
+  followX: number;
+  followZ: number;
+}
+/**
+ * Stiffness of the tagline's pull, as the frequency (Hz) of the ball's critically damped approach
+ * to where it is drawn: it settles in about half a second, and a ball still moving when let go would
+ * swing off its arc.
+ */
+const PULL_HERTZ = 2;
+/** Largest acceleration, m/s^2, the tagline gives the ball across the ground (a winch's pull on 5 t). */
+const PULL_ACCEL = 14;
+/**
+ * Top speed, m/s, and acceleration, m/s^2, of the hook across the ground while the line holds the
+ * ball: what the line can carry the 5 t ball along at without it flying out on its chain (at the
+ * planned swings' 2.5 times the crane's rates the ball swung out level with the hook).
+ */
+const PULL_HOOK_SPEED = 5;
+const PULL_HOOK_ACCEL = 5;
+/**
+ * Seconds after the player let go, with the hook in place, that the line slips even if the ball is
+ * not yet where it is drawn (held up against a piece): the swing goes from where the ball is.
+ */
+const PULL_WAIT = 0.3;
+/** Distance across the ground, m, from the hook's goal within which it lets the ball down from CRUISE_HEIGHT (at HOIST_SPEED, about as long as the rest of its run). */
+const PULL_LOWER = 2;
+/**
+ * Nearest, m, a held ball's centre or its chain comes to the mast's axis: the mast's corner (0.57 m)
+ * and the ball's radius with room, so the ball is never drawn into the mast nor the chain across it.
+ */
+const MAST_CLEAR = 1.4;
+/** How near, m and m/s, the ball must be to where it is drawn, and how still, for the line to slip. */
+const READY_NEAR = 0.4;
+const READY_STILL = 1;
+
+/**
+ * Draws the ball back for the player's swing at piece `piece`: the hook runs over the strike point
+ * (the piece in a wall, the middle of a stack or a tower, at the piece's height; within the jib's
+ * reach) and a tagline draws the ball back along its chain's arc, opposite `request.direction`, as
+ * far as a pendulum let go from rest needs to pass under the hook at `request.speed` (`offset`: L
+ * sin theta with v^2 = 2 g L (1 - cos theta)), or less so that neither the ball nor its chain comes
+ * within MAST_CLEAR of the mast. Once let go (`letGoPull`) the line slips when all is in place, and
+ * the ball swings down from there under gravity alone, meeting the piece about a quarter of its
+ * swing later (SWING_PERIOD / 4, 1.1 s); the hook then follows through as a planned swing's does.
+ * Called again as the player drags, it sets the new goal and draw (not yet let go). Drops any planned
+ * moves or goal.
+ */
+export function pullBack(world: PhysicsWorld, h: WreckingBallHandles, piece: number, request: SwingRequest): void {
+  const P = world.components.Position;
+  const tapped = h.pieces.find((q) => q.body === piece);
+  const structure = tapped ? structureOf(h.pieces, tapped) : [];
+  let tx = P.x[piece]!,
+    tz = P.z[piece]!;
+  if (tapped && tapped.kind !== 'wall' && structure.length > 0) {
+    tx = structure.reduce((a, q) => a + P.x[q.body]!, 0) / structure.length;
+    tz = structure.reduce((a, q) => a + P.z[q.body]!, 0) / structure.length;
+  }
+  const ballY = Math.max(BALL_RADIUS + 0.05, P.y[piece]!);
+  const height = Math.min(HOOK_RANGE[1], Math.max(HOOK_RANGE[0], ballY + HANG));
+  const r0 = Math.min(RADIUS_RANGE[1], Math.max(RADIUS_RANGE[0], Math.hypot(tx, tz)));
+  const a0 = Math.atan2(-tz, tx);
+  const x = r0 * Math.cos(a0),
+    z = -r0 * Math.sin(a0);
+  const ux = Math.cos(request.direction),
+    uz = Math.sin(request.direction);
+  const cos = Math.max(0.2, 1 - (request.speed * request.speed) / (2 * 9.81 * HANG));
+  let offset = HANG * Math.sqrt(1 - cos * cos);
+  // Shortened till the segment from the hook to the ball keeps MAST_CLEAR from the mast's axis.
+  while (offset > 0.3 && segmentToAxis(x, z, x - offset * ux, z - offset * uz) < MAST_CLEAR) offset -= 0.1;
+  const d = Math.round(((request.direction / (2 * Math.PI)) * APPROACH_DIRECTIONS + APPROACH_DIRECTIONS) % APPROACH_DIRECTIONS);
+  const [followX, followZ] = followEnd(world, structure, x, z, tx, tz, d);
+  const old = h.controls.pull;
+  const again = old !== null && old.offset > 0 && (old.letGo || old.again);
+  h.controls.pull = { piece, x, z, height, ux, uz, offset, letGo: false, waited: 0, again, followX, followZ };
+  h.controls.moves = [];
+  h.controls.swing = null;
+  h.controls.goal = null;
+}
+
+/** Lets the tagline go (the swing goes as soon as the ball is in place); nothing without one. */
+export function letGoPull(h: WreckingBallHandles): void {
+  if (h.controls.pull !== null) h.controls.pull.letGo = true;
+}
+
+/** Pays the tagline out with no swing: the hook stays, the ball is let down under it, then the line is gone. */
+export function dropPull(h: WreckingBallHandles): void {
+  const pull = h.controls.pull;
+  if (pull === null) return;
+  [pull.x, pull.height, pull.z] = hookPosition(h.crane);
+  pull.offset = 0;
+  pull.letGo = true;
+}
+
+/** Nearest distance, m, across the ground from the mast's axis to the segment from (ax, az) to (bx, bz). */
+function segmentToAxis(ax: number, az: number, bx: number, bz: number): number {
+  const dx = bx - ax,
+    dz = bz - az,
+    l2 = dx * dx + dz * dz;
+  const t = l2 < 1e-12 ? 0 : Math.min(1, Math.max(0, -(ax * dx + az * dz) / l2));
+  return Math.hypot(ax + t * dx, az + t * dz);
+}
+
+/**
+ * One substep of the tagline (`CraneControls.pull`): the hook closes on its goal (at PULL_GAIN,
+ * within PLAN_RATE times the crane's slew and trolley rates and its hoist rate), the line pulls the
+ * ball across the ground toward `offset` back from under the hook (a critically damped spring of
+ * PULL_HERTZ, with the chain's pull at that angle made up, at most PULL_ACCEL); once let go and
+ * in place (`pullReady`), the line slips: the swing's run begins (a hold while the ball swings down
+ * through the piece, then the follow-through), or with no offset, the line is simply gone.
+ */
+function pullStep(world: PhysicsWorld, h: WreckingBallHandles, pull: PullBack, dt: number): void {
+  const c = h.crane;
+  const [hx, , hz] = hookPosition(c);
+  const [gx, gy, gz] = hookPosition({ angle: Math.atan2(-pull.z, pull.x), radius: Math.hypot(pull.x, pull.z), height: pull.height });
+  const inPlace = Math.hypot(hx - gx, hz - gz) < 0.05 && Math.abs(hookPosition(c)[1] - gy) < 0.1;
+  if (pull.letGo && inPlace) pull.waited += dt;
+  if (pull.letGo && inPlace && (pullReady(world, h, pull) || pull.waited > PULL_WAIT)) {
+    h.controls.pull = null;
+    if (pull.offset === 0) return;
+    const hold = SWING_PERIOD / 4 + 0.4;
+    h.controls.moves = [
+      { angle: c.angle, radius: c.radius, height: c.height, duration: hold, elapsed: 0, run: true, release: true },
+      {
+        angle: Math.atan2(-pull.followZ, pull.followX),
+        radius: Math.min(RADIUS_RANGE[1], Math.max(RADIUS_RANGE[0], Math.hypot(pull.followX, pull.followZ))),
+        height: c.height,
+        duration: Math.max(0.1, Math.hypot(pull.followX - hx, pull.followZ - hz) / FOLLOW_SPEED),
+        elapsed: 0,
+        run: true,
+        follow: true,
+      },
+    ];
+    return;
+  }
+  // Slew and trolley each on a braking profile (speeding up at PULL_HOOK_ACCEL, slowing to stop at
+  // the goal), the slew's rates those of the hook across the ground at its radius.
+  const r = Math.max(RADIUS_RANGE[0], c.radius);
+  h.drive.slew = closeOn(h.drive.slew, wrap(Math.atan2(-pull.z, pull.x) - c.angle), PULL_HOOK_SPEED / r, PULL_HOOK_ACCEL / r, dt);
+  h.drive.trolley = closeOn(h.drive.trolley, Math.hypot(pull.x, pull.z) - c.radius, PULL_HOOK_SPEED, PULL_HOOK_ACCEL, dt);
+  // Far from its goal the hook carries the ball high (CRUISE_HEIGHT), over the structures on its
+  // way, and lets it down to the strike's height over the last PULL_LOWER m.
+  const far = Math.hypot(hx - gx, hz - gz) > PULL_LOWER;
+  const lift = Math.max(
+    -HOIST_SPEED * dt,
+    Math.min(HOIST_SPEED * dt, (far ? Math.max(pull.height, CRUISE_HEIGHT) : pull.height) - c.height),
+  );
+  c.angle = wrap(c.angle + h.drive.slew * dt);
+  c.radius = Math.min(RADIUS_RANGE[1], Math.max(RADIUS_RANGE[0], c.radius + h.drive.trolley * dt));
+  c.height = Math.min(HOOK_RANGE[1], Math.max(HOOK_RANGE[0], c.height + lift));
+  const P = world.components.Position,
+    V = world.components.Velocity,
+    F = world.components.Force,
+    M = world.components.Mass,
+    b = h.ball;
+  const [nx, , nz] = hookPosition(c);
+  // On its way the line holds the ball under the hook (drawn back, it swung wide and through what it
+  // passed); over the last PULL_LOWER m it draws it back.
+  const drawn = far ? 0 : pull.offset;
+  const ex = P.x[b]! - (nx - drawn * pull.ux),
+    ez = P.z[b]! - (nz - drawn * pull.uz);
+  const w = 2 * Math.PI * PULL_HERTZ;
+  // The chain's pull toward under the hook at the drawn angle, g d / sqrt(L^2 - d^2), made up.
+  const hold = (9.81 * drawn) / Math.sqrt(HANG * HANG - drawn * drawn);
+  let ax = -w * w * ex - 2 * w * (V.x[b]! - (nx - hx) / dt) - hold * pull.ux,
+    az = -w * w * ez - 2 * w * (V.z[b]! - (nz - hz) / dt) - hold * pull.uz;
+  const a = Math.hypot(ax, az);
+  if (a > PULL_ACCEL) {
+    ax *= PULL_ACCEL / a;
+    az *= PULL_ACCEL / a;
+  }
+  const m = 1 / M.inv[b]!;
+  F.x[b] = F.x[b]! + m * ax;
+  F.z[b] = F.z[b]! + m * az;
+}
+
+/**
+ * Rate `v` (per s) of a drive `e` short of its goal after the next `dt` s: toward the rate that stops
+ * it at the goal at `accel` (sqrt(2 accel e), at most `top`), changing by `accel` dt at most; exactly
+ * onto the goal when that is within the step.
+ */
+function closeOn(v: number, e: number, top: number, accel: number, dt: number): number {
+  if (Math.abs(e) <= Math.abs(v) * dt + accel * dt * dt && Math.abs(v) <= 2 * accel * dt + Math.sqrt(2 * accel * Math.abs(e)))
+    return e / dt;
+  const want = Math.sign(e) * Math.min(top, Math.sqrt(2 * accel * Math.abs(e)));
+  return v + Math.max(-accel * dt, Math.min(accel * dt, want - v));
+}
+
+/** Whether the hook is at its goal and the ball where the tagline draws it and nearly still: the line may slip. */
+function pullReady(world: PhysicsWorld, h: WreckingBallHandles, pull: PullBack): boolean {
+  const [hx, hy, hz] = hookPosition(h.crane);
+  if (Math.hypot(hx - pull.x, hz - pull.z) > 0.08 || Math.abs(hy - pull.height) > 0.1) return false;
+  const P = world.components.Position,
+    V = world.components.Velocity,
+    b = h.ball;
+  const near = Math.hypot(P.x[b]! - (hx - pull.offset * pull.ux), P.z[b]! - (hz - pull.offset * pull.uz));
+  return near < READY_NEAR && Math.hypot(V.x[b]! - V.x[h.trolley]!, V.z[b]! - V.z[h.trolley]!) < READY_STILL;
+}
+
+/**
  * Rate `v` moved toward `want` over `dt` s: at `accel` while speeding up (from rest or the same
  * way), at `coast` while slowing to a lesser rate the same way or to rest, at `reverse` while `want`
  * is the other way; never past `want`.
@@ -1162,7 +1400,10 @@ export function craneSystem(h: WreckingBallHandles): (world: PhysicsWorld) => vo
       aim.done++;
     }
     const move = k.moves[0];
-    if (move !== undefined) {
+    const pulling = k.pull !== null && move === undefined && !toGoal;
+    if (pulling) {
+      pullStep(world, h, k.pull!, dt);
+    } else if (move !== undefined) {
       // A timed move: the rest of the way along a straight line at a constant velocity over the
       // time left (`aimAt` plans the hook's velocities), held to the jib's reach.
       // A move ends on the substep that has a substep's time left or less (within a part in a

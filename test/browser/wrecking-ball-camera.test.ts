@@ -45,19 +45,26 @@ describe('wrecking ball: the camera holds still between swings', () => {
         }
         return out;
       });
-    /** A drag back from the middle of the lowest piece of `kind`: a swing at it. */
-    const swingAt = (kind: string) =>
-      g.page.evaluate((kind) => {
-        const game = window.game as unknown as WB;
-        const P = game.world.components.Position;
-        const piece = game
-          .handles()
-          .pieces.filter((p) => p.kind === kind)
-          .reduce((a, b) => (P.y[b.body]! < P.y[a.body]! ? b : a)).body;
-        const s = game.app.camera.position.clone().set(P.x[piece]!, P.y[piece]!, P.z[piece]!).project(game.app.camera);
-        game.pressAt(s.x, s.y);
-        return game.releaseAt(s.x, s.y - 0.2);
-      }, kind);
+    /**
+     * A drag back from the middle of the lowest piece of `kind` by (dx, dy) NDC: a swing at it. The
+     * ball is drawn back opposite the arrow while the drag is held (./scene pullBack), so a pull
+     * must keep it on the screen for the camera to have no reason to move.
+     */
+    const swingAt = (kind: string, dx: number, dy: number) =>
+      g.page.evaluate(
+        ([kind, dx, dy]) => {
+          const game = window.game as unknown as WB;
+          const P = game.world.components.Position;
+          const piece = game
+            .handles()
+            .pieces.filter((p) => p.kind === kind)
+            .reduce((a, b) => (P.y[b.body]! < P.y[a.body]! ? b : a)).body;
+          const s = game.app.camera.position.clone().set(P.x[piece]!, P.y[piece]!, P.z[piece]!).project(game.app.camera);
+          game.pressAt(s.x, s.y);
+          return game.releaseAt(s.x + dx, s.y + dy);
+        },
+        [kind, dx, dy] as const,
+      );
     const settled = async (used: number) => {
       await g.waitFor((n) => (window.game as unknown as WB).swings().used >= n, used, 30_000);
       await g.waitFor(() => (window.game as unknown as WB).handles().controls.moves.length === 0, null, 60_000);
@@ -65,10 +72,11 @@ describe('wrecking ball: the camera holds still between swings', () => {
     };
     const before = await spots();
     expect(Object.keys(before)).toEqual(expect.arrayContaining(['planks', 'wall']));
-    expect(await swingAt('planks')).toBe('swing');
+    expect(await swingAt('planks', 0, -0.2)).toBe('swing');
     await settled(1);
     const mid = await spots();
-    expect(await swingAt('wall')).toBe('swing');
+    // The wall stands near the screen's lower left: pulled down or left the ball would be drawn off it.
+    expect(await swingAt('wall', 0.2, 0)).toBe('swing');
     await settled(2);
     const after = await spots();
     console.log(JSON.stringify({ before, mid, after }));

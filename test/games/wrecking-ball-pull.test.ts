@@ -1,0 +1,160 @@
+/**
+ * Wrecking ball, the time from letting go of a drag to the ball's first touch of the structure
+ * dragged at: a fixed set of gestures over levels 1 and 2 (each from a fresh level, the crane as
+ * the page starts it, 0.5 s settled): at each structure a press on its piece a third of the way up,
+ * a drag that aims the ball straight from where it hangs, or 40 degrees either side, at full power
+ * or at 0.5 (./scene swingSpeed), held 1 or 2 s, then let go. The page draws the ball back while the
+ * drag is held (`pullBack`, as its aimDrag does) and lets the line go on release (`letGoPull`, as
+ * its swingAt does for a drag).
+ */
+import { contactEvents, createPhysicsWorld, step } from '@bitphysics/physics';
+import { describe, expect, it } from 'vitest';
+import {
+  buildWreckingBall,
+  hookPosition,
+  letGoPull,
+  pullBack,
+  type SwingRequest,
+  scorePieces,
+  swingSpeed,
+  wreckingBallWorldOptions,
+} from '../../games/wrecking-ball/scene';
+
+interface Gesture {
+  level: number;
+  structure: number;
+  turn: number;
+  power: number;
+  hold: number;
+}
+
+/** The gestures: per structure of levels 1 and 2, three directions at full power held 1 and 2 s, and the straight one at half power held 1 s. */
+function gestures(): Gesture[] {
+  const out: Gesture[] = [];
+  for (const level of [1, 2]) {
+    const h = buildWreckingBall(createPhysicsWorld(wreckingBallWorldOptions()), { level, openStart: true });
+    const n = groups(h.pieces).length;
+    for (let structure = 0; structure < n; structure++) {
+      for (const turn of [0, 40, -40]) for (const hold of [1, 2]) out.push({ level, structure, turn, power: 1, hold });
+      out.push({ level, structure, turn: 0, power: 0.5, hold: 1 });
+    }
+  }
+  return out;
+}
+
+/** Pieces grouped by their start centre (within 2.5 m): the level's structures. */
+function groups<T extends { x0: number; z0: number }>(pieces: T[]): T[][] {
+  const out: T[][] = [];
+  for (const p of pieces) {
+    const g = out.find((q) => Math.hypot(q[0]!.x0 - p.x0, q[0]!.z0 - p.z0) < 2.5);
+    if (g) g.push(p);
+    else out.push([p]);
+  }
+  return out;
+}
+
+/**
+ * Plays gesture `g`: seconds from the let-go to the ball's first touch of the structure (Infinity:
+ * none within 10 s), whether the piece fell, and how near (m, across the ground) the chain's line
+ * from the hook to the ball came to the mast's axis while the tagline held the ball.
+ */
+function play(g: Gesture): { toHit: number; fell: boolean; mast: number } {
+  const world = createPhysicsWorld(wreckingBallWorldOptions());
+  const h = buildWreckingBall(world, { level: g.level, openStart: true });
+  for (let k = 0; k < 30; k++) step(world);
+  const group = groups(h.pieces)[g.structure]!;
+  const standing = group.slice().sort((a, b) => a.y0 - b.y0);
+  const piece = standing[Math.floor(standing.length / 3)]!;
+  const P = world.components.Position;
+  const straight = Math.atan2(P.z[piece.body]! - P.z[h.ball]!, P.x[piece.body]! - P.x[h.ball]!);
+  const request: SwingRequest = { direction: straight + (g.turn * Math.PI) / 180, speed: swingSpeed(g.power) };
+  pullBack(world, h, piece.body, request);
+  let mast = Number.POSITIVE_INFINITY;
+  const held = (): void => {
+    if (h.controls.pull === null) return;
+    const [hx, , hz] = hookPosition(h.crane);
+    mast = Math.min(mast, axisDistance(hx, hz, P.x[h.ball]!, P.z[h.ball]!));
+  };
+  for (let t = 0; t < g.hold - 1e-9; t += world.dt) {
+    step(world);
+    scorePieces(world, h.pieces);
+    held();
+  }
+  letGoPull(h);
+  let t = 0;
+  while (t < 10) {
+    step(world);
+    held();
+    scorePieces(world, h.pieces);
+    t += world.dt;
+    const ev = contactEvents(world).begin;
+    for (let i = 0; i < ev.count; i++) {
+      const other = ev.bodyA[i] === h.ball ? ev.bodyB[i] : ev.bodyB[i] === h.ball ? ev.bodyA[i] : -1;
+      if (group.some((q) => q.body === other)) return { toHit: t, fell: finish(world, h, piece), mast };
+    }
+  }
+  return { toHit: Number.POSITIVE_INFINITY, fell: piece.fallen, mast };
+}
+
+/** Nearest distance, m, across the ground from the mast's axis to the segment from the hook (ax, az) to the ball (bx, bz). */
+function axisDistance(ax: number, az: number, bx: number, bz: number): number {
+  const dx = bx - ax,
+    dz = bz - az,
+    l2 = dx * dx + dz * dz;
+  const t = l2 < 1e-12 ? 0 : Math.min(1, Math.max(0, -(ax * dx + az * dz) / l2));
+  return Math.hypot(ax + t * dx, az + t * dz);
+}
+
+/** Steps 2.5 s more (the structure falling) and says whether the piece fell. */
+function finish(
+  world: ReturnType<typeof createPhysicsWorld>,
+  h: ReturnType<typeof buildWreckingBall>,
+  piece: { fallen: boolean },
+): boolean {
+  for (let k = 0; k < 150; k++) {
+    step(world);
+    scorePieces(world, h.pieces);
+  }
+  return piece.fallen;
+}
+
+/** The value at share q of the sorted values (nearest rank). */
+function quantile(sorted: number[], q: number): number {
+  return sorted[Math.min(sorted.length - 1, Math.ceil(q * sorted.length) - 1)]!;
+}
+
+describe('wrecking-ball: drag to hit', () => {
+  it('hits soon after the drag is let go, held 1 s or 2 s', { timeout: 900_000 }, () => {
+    const all = gestures().map((g) => ({ g, ...play(g) }));
+    const times = all.map((r) => r.toHit).sort((a, b) => a - b);
+    const short = all
+      .filter((r) => r.g.hold === 1)
+      .map((r) => r.toHit)
+      .sort((a, b) => a - b);
+    console.log(
+      all
+        .map(
+          (r) =>
+            `L${r.g.level} s${r.g.structure} ${String(r.g.turn).padStart(3)} deg p${r.g.power} hold ${r.g.hold} s: ${r.toHit.toFixed(2)} s ${r.fell ? 'fell' : 'stood'}`,
+        )
+        .join('\n'),
+    );
+    console.log(
+      `gestures ${all.length}, median ${quantile(times, 0.5).toFixed(2)} s, p90 ${quantile(times, 0.9).toFixed(2)} s; 1 s holds median ${quantile(short, 0.5).toFixed(2)} s, p90 ${quantile(short, 0.9).toFixed(2)} s; fell ${all.filter((r) => r.fell).length}`,
+    );
+    const nearMast = Math.min(...all.map((r) => r.mast));
+    console.log(`nearest the held chain came to the mast's axis: ${nearMast.toFixed(2)} m`);
+    // Measured (63 gestures): median 1.63 s, p90 5.08 s; 1 s holds median 2.30 s, p90 5.22 s; 54
+    // pieces aimed at fell. The same gestures before the ball was drawn back while the drag was
+    // held (the crane planning its swing only once let go): median 3.15 s, p90 6.28 s (1 s holds
+    // 2.97 s, 6.28 s), 58 fell; these bounds fail there. Bounds: the median half a second over the
+    // measured (the chain is not the pendulum the line's draw is sized on), p90 0.7 s over.
+    expect(all.length).toBeGreaterThan(40);
+    expect(quantile(times, 0.5)).toBeLessThan(2.2);
+    expect(quantile(times, 0.9)).toBeLessThan(5.8);
+    expect(all.filter((r) => r.fell).length).toBeGreaterThanOrEqual(Math.ceil(0.75 * all.length));
+    // The chain's line from the hook to the held ball never crosses the mast (its corner 0.57 m
+    // from the axis, a link's radius more).
+    expect(nearMast).toBeGreaterThan(0.64);
+  });
+});
