@@ -28,14 +28,18 @@ interface Gesture {
   hold: number;
 }
 
-/** The gestures: per structure of levels 1 and 2, three directions at full power held 1 and 2 s, and the straight one at half power held 1 s. */
+/**
+ * The gestures: per structure of levels 1 and 2, three directions at full power and the straight one
+ * at half power, each held 1 s (the short holds, where the crane has least time to get there: the
+ * slowest to hit; with 2 s holds added, 63 gestures, the median was 1.63 s and p90 5.08 s).
+ */
 function gestures(): Gesture[] {
   const out: Gesture[] = [];
   for (const level of [1, 2]) {
     const h = buildWreckingBall(createPhysicsWorld(wreckingBallWorldOptions()), { level, openStart: true });
     const n = groups(h.pieces).length;
     for (let structure = 0; structure < n; structure++) {
-      for (const turn of [0, 40, -40]) for (const hold of [1, 2]) out.push({ level, structure, turn, power: 1, hold });
+      for (const turn of [0, 40, -40]) out.push({ level, structure, turn, power: 1, hold: 1 });
       out.push({ level, structure, turn: 0, power: 0.5, hold: 1 });
     }
   }
@@ -124,13 +128,9 @@ function quantile(sorted: number[], q: number): number {
 }
 
 describe('wrecking-ball: drag to hit', () => {
-  it('hits soon after the drag is let go, held 1 s or 2 s', { timeout: 900_000 }, () => {
+  it('hits soon after a drag held 1 s is let go', { timeout: 900_000 }, () => {
     const all = gestures().map((g) => ({ g, ...play(g) }));
     const times = all.map((r) => r.toHit).sort((a, b) => a - b);
-    const short = all
-      .filter((r) => r.g.hold === 1)
-      .map((r) => r.toHit)
-      .sort((a, b) => a - b);
     console.log(
       all
         .map(
@@ -140,17 +140,17 @@ describe('wrecking-ball: drag to hit', () => {
         .join('\n'),
     );
     console.log(
-      `gestures ${all.length}, median ${quantile(times, 0.5).toFixed(2)} s, p90 ${quantile(times, 0.9).toFixed(2)} s; 1 s holds median ${quantile(short, 0.5).toFixed(2)} s, p90 ${quantile(short, 0.9).toFixed(2)} s; fell ${all.filter((r) => r.fell).length}`,
+      `gestures ${all.length}, median ${quantile(times, 0.5).toFixed(2)} s, p90 ${quantile(times, 0.9).toFixed(2)} s; fell ${all.filter((r) => r.fell).length}`,
     );
     const nearMast = Math.min(...all.map((r) => r.mast));
     console.log(`nearest the held chain came to the mast's axis: ${nearMast.toFixed(2)} m`);
-    // Measured (63 gestures): median 1.63 s, p90 5.08 s; 1 s holds median 2.30 s, p90 5.22 s; 54
-    // pieces aimed at fell. The same gestures before the ball was drawn back while the drag was
-    // held (the crane planning its swing only once let go): median 3.15 s, p90 6.28 s (1 s holds
-    // 2.97 s, 6.28 s), 58 fell; these bounds fail there. Bounds: the median half a second over the
-    // measured (the chain is not the pendulum the line's draw is sized on), p90 0.7 s over.
-    expect(all.length).toBeGreaterThan(40);
-    expect(quantile(times, 0.5)).toBeLessThan(2.2);
+    // Measured (36 gestures, all 1 s holds): median 2.30 s, p90 5.22 s, 29 pieces aimed at fell. The
+    // same gestures before the ball was drawn back while the drag was held (the crane planning its
+    // swing only once let go): median 2.97 s, p90 6.28 s; these bounds fail there. Bounds: the
+    // median 0.4 s over the measured (the chain is not the pendulum the line's draw is sized on),
+    // p90 0.6 s over.
+    expect(all.length).toBeGreaterThan(30);
+    expect(quantile(times, 0.5)).toBeLessThan(2.7);
     expect(quantile(times, 0.9)).toBeLessThan(5.8);
     expect(all.filter((r) => r.fell).length).toBeGreaterThanOrEqual(Math.ceil(0.75 * all.length));
     // The chain's line from the hook to the held ball never crosses the mast (its corner 0.57 m
