@@ -33,12 +33,16 @@ export function cubeControls(mode: Mode, touch: boolean): ControlHint[] {
           }
         : { keys: 'W S, A D', action: 'spin it: tip it away or toward you (W S), turn it left or right (A D)', touch: 'Pitch ▲▼ Yaw ◀▶' },
     room
-      ? { keys: 'Q E', action: 'turn it a quarter turn flat on the floor, left or right', touch: '⟲ ⟳' }
+      ? {
+          keys: 'Q E',
+          action: 'turn it a quarter turn flat on the floor, left or right (counts as a move)',
+          touch: '⟲ ⟳',
+        }
       : mode === 'cube'
         ? { keys: 'Q E', action: "push the spin arrow's tip toward you or away", touch: 'Near Far' }
         : { keys: 'Q E', action: 'spin it like a wheel facing you, left or right', touch: 'Roll ⟲ ⟳' },
     { keys: 'X', action: 'stop spinning', touch: 'Stop' },
-    ...(room ? [{ keys: 'Space', action: 'jump', touch: 'Jump', card: false }] : []),
+    ...(room ? [{ keys: 'Space', action: 'jump (free: not a move)', touch: 'Jump', card: false }] : []),
     { keys: 'M', action: 'mode: pads / spin the cube / flipping box', touch: 'Mode' },
   ];
 }

@@ -94,7 +94,7 @@ import { cubeControls, TAP_SLOP, touchPress } from './controls';
 import { bedSnap } from './roll-puzzle';
 import { buildRoomLook } from './room-look';
 import { type RoundEndContent, roundEnd, starText } from './round-end';
-import { roundMovesText } from './round-moves';
+import { padResultText, roundMovesText } from './round-moves';
 import {
   buildRotatingCube,
   CELL_REACH,
@@ -140,8 +140,13 @@ import { ToGoMeter } from './to-go';
 
 /** A mouse press that moves more than this, CSS px, is a camera drag, not a click (a finger: controls.ts TAP_SLOP). */
 const CLICK_SLOP = 5;
-/** Room mode: a push lands within this of its target, m, for a "perfect" (the pad's pop says so). */
-const PERFECT = 0.25;
+/**
+ * Room mode: how long a reached pad's pop ("Pad 2 of 5 ✓ · Perfect!") stays before it fades, ms: a
+ * beat the player sees while already making the next move (the pop takes no input).
+ */
+const PAD_POP_MS = 2600;
+/** Whether the pop has said this page visit that a quarter turn counts as a move (said on the first one). */
+let turnSaid = false;
 /** On the pivot: the height of the floor under it, m (the pivot's post stands on it; it catches the shadow). */
 const PIVOT_FLOOR_Y = -1.6;
 /** Length of the angular-velocity arrow at the starting spin (or at 1 rad/s if slower), m. */
@@ -789,7 +794,7 @@ app.scene.add(burst);
 /** performance.now() of the last pad reached, ms (the burst and the pop run from it). */
 let burstAt = -Infinity;
 /** A burst lasts this long, ms. */
-const BURST_MS = 700;
+const BURST_MS = 1100;
 
 /** A square outline picture for a 1 m cell: a white rim with rounded corners, transparent inside. */
 function outlineTexture(): CanvasTexture {
@@ -822,7 +827,19 @@ const cellMark = new Mesh(
 cellMark.visible = false;
 /** The cell under the finger of the last tap that pushed (its centre, x and z, m). */
 const tappedCell: [number, number] = [0, 0];
-app.scene.add(aimArrow.object, aimRing, cellMark);
+/** A red ring flashed on a clicked cell the cube cannot slide to (its own cell, or a pad's ROLL tiles): "can't go there". */
+const refuseMark = new Mesh(
+  new RingGeometry(0.3, 0.42, 40).rotateX(-Math.PI / 2),
+  new MeshBasicMaterial({ color: 0xff4a3d, transparent: true, opacity: 0.95, side: DoubleSide, depthWrite: false }),
+);
+refuseMark.visible = false;
+refuseMark.renderOrder = 4;
+/** How long the red ring of a refused click shows, fading, ms. */
+const REFUSE_MS = 900;
+/** performance.now() of the last refused click (-Infinity: none), and refused clicks since the page loaded (a test reads it). */
+let refusedAt = -Infinity,
+  refusals = 0;
+app.scene.add(aimArrow.object, aimRing, cellMark, refuseMark);
 aimArrow.hide();
 /** performance.now() until which the aim of the last tap stays shown (touch has no hover), ms. */
 let aimUntil = 0;
@@ -935,13 +952,12 @@ function celebrate(): void {
     burstAt = performance.now();
     sound.chime(PAD_PITCHES[r.pad] ?? 880, last ? 0.3 : 0.35);
     if (last) window.setTimeout(() => sound.chime(1568, 0.8), 180);
-    const perfect = r.miss <= PERFECT ? ' · Perfect!' : '';
-    const inPar = r.moves <= r.par ? ' · on par!' : ` · ${r.moves} moves, par ${r.par}`;
+    // A pad's pop stays PAD_POP_MS, long enough to read as a beat of play (it takes no input: pointer-events none).
     showPop(
       last
         ? `All ${layout.pads.length} pads! ${pads.moves} moves ${stars(padStars(pads.moves, pads.par))}`
-        : `Pad ${r.pad + 1} of ${layout.pads.length} ✓${r.par > 1 ? inPar : perfect}`,
-      last ? BANNER_DELAY_MS : 1100,
+        : `Pad ${r.pad + 1} of ${layout.pads.length} ✓${padResultText(r.moves, r.par)}`,
+      last ? BANNER_DELAY_MS : PAD_POP_MS,
     );
   }
 }
@@ -1256,6 +1272,10 @@ function updateKeyTorque(): void {
   // Room: Q and E turn the cube a quarter turn a press, and on while held (the next quarter once the turn is near its end).
   if (params.mode === 'room' && roll !== 0 && (pressed.has('q') || pressed.has('e') || !yawKeeper.turning)) {
     yawKeeper.turn(roll);
+    if (!pads.done && !turnSaid) {
+      turnSaid = true;
+      showPop('A quarter turn counts as a move: it changes what each roll brings up', 2400, '#bfe9ff');
+    }
     pads.turned();
   }
   pressed.clear();
@@ -1470,11 +1490,16 @@ function aimAt(ndcX: number, ndcY: number): Push | null {
   return aim;
 }
 
-/** Says in the pop why the click just made (`aimWhy`) moved nothing. */
+/** Says in the pop why the click just made (`aimWhy`) moved nothing, and flashes a red ring on the cell clicked. */
 function sayWhyNot(): void {
   const roll = pageLayout().touch() ? '▲◀▼▶' : 'W A S D';
-  if (aimWhy === 'here') showPop(`The cube is on that cell: pick another, or roll it (${roll})`, 1600, '#bfe9ff');
-  else if (aimWhy === 'bed') showPop(`A slide can't reach that cell: roll onto it (${roll})`, 1800, '#bfe9ff');
+  if (aimWhy === '') return;
+  refusals++;
+  refusedAt = performance.now();
+  refuseMark.position.set(hoverCell[0], 0.04, hoverCell[1]);
+  sound.chime(220, 0.12);
+  if (aimWhy === 'here') showPop(`✗ The cube is on that cell: pick another, or roll it (${roll})`, 1600, '#ffb4a8');
+  else showPop(`✗ Can't slide there: roll onto it (${roll})`, 1800, '#ffb4a8');
 }
 
 /**
@@ -2310,6 +2335,11 @@ function frame(): void {
   celebrate();
   updateBanner();
   sayBlocked();
+  const refuseAge = (now - refusedAt) / REFUSE_MS;
+  refuseMark.visible = room && refuseAge >= 0 && refuseAge < 1;
+  // Two blinks, then a fade.
+  if (refuseMark.visible)
+    (refuseMark.material as MeshBasicMaterial).opacity = refuseAge < 0.4 && refuseAge % 0.2 > 0.1 ? 0.25 : 0.95 * (1 - refuseAge ** 2);
   const age = (now - burstAt) / BURST_MS;
   burst.visible = room && age >= 0 && age < 1;
   if (burst.visible) {
@@ -2515,6 +2545,8 @@ shell.expose({
    * have been shown since the page loaded (a pop fades after 1.1 to 2.6 s of the clock).
    */
   pop: () => ({ text: pop.textContent ?? '', shown: pop.style.opacity === '1', count: popsShown }),
+  /** Room clicks refused (a cell the cube cannot slide to) since the page loaded, and whether the red ring shows now. */
+  refused: () => ({ count: refusals, shown: refuseMark.visible }),
   /** Sounds played so far (the pads' chimes, pushes, impacts; 0 until the first input starts the audio). */
   soundsPlayed: (): number => sound.played,
   /**

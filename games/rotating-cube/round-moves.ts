@@ -21,3 +21,15 @@ export function roundMovesText(moves: number, par: number, short = false): strin
       return short ? `round ${moves}/${par + slack} ${starText(3 - i)}` : `round: ${moves} of ${par + slack} moves for ${starText(3 - i)}`;
   return short ? `round ${moves} ${starText(1)}` : `round: ${moves} moves ${starText(1)}`;
 }
+
+/**
+ * The words a pad's pop adds after "Pad 2 of 5 ✓" for the moves it took against its best (`par`,
+ * the fewest from where the cube was when the pad lit): " · Perfect!" for any optimal solution (one
+ * label whatever the par, so a best of 2 reads the same as a best of 1), else " · 4 moves, best 2".
+ * @throws RangeError if `moves` or `par` is not an integer >= 0.
+ */
+export function padResultText(moves: number, par: number): string {
+  if (!Number.isInteger(moves) || moves < 0) throw new RangeError(`padResultText: moves must be an integer >= 0, got ${moves}`);
+  if (!Number.isInteger(par) || par < 0) throw new RangeError(`padResultText: par must be an integer >= 0, got ${par}`);
+  return moves <= par ? ' · Perfect!' : ` · ${moves} moves, best ${par}`;
+}

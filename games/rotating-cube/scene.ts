@@ -674,8 +674,11 @@ export class FlipCounter {
  * wants on top (`topFace`) the next one lights. A pad that wants a face counts only when the cube
  * ROLLED onto it: its top face changed after the last slide (`slid`), so the route to it matters (a
  * slide keeps the top face, and rolling on changes it: the player picks the side to roll on from).
- * Every move counts for the stars: a roll (a change of the top face, counted here), a slide (`slid`),
- * a quarter turn (`turned`), a jump (`jumped`); against the round's par, the sum of each pad's
+ * Every move that can change the puzzle counts for the stars: a roll (a change of the top face,
+ * counted here), a slide (`slid`), a quarter turn (`turned`: it keeps the top face but changes which
+ * face each roll brings up, so the par's search counts it too); a hop on the spot (`jumped`) is free,
+ * as it lands on the same cell with the same face up (a jump that tumbles it counts as the roll it
+ * makes); against the round's par, the sum of each pad's
  * `padMovePar` worked out from where the cube is when the pad lights. After the last pad the round is
  * over at `doneAt` (world time, s). The round's clock (`time`) starts at `startedAt`, the world time of the player's
  * first input (`start`), not at the world's start, so reading the help costs nothing; and it runs only while the
@@ -692,8 +695,10 @@ export class PadChallenge {
   startedAt = -1;
   /** Rolls made in the round so far (changes of the face on top), >= 0. */
   rolls = 0;
-  /** Moves made in the round so far (rolls, slides, quarter turns, jumps), >= 0. */
+  /** Moves made in the round so far (rolls, slides, quarter turns; not jumps), >= 0. */
   moves = 0;
+  /** Jumps made in the round so far, >= 0 (free: not moves). */
+  jumps = 0;
   /** Each lit pad's par (`padMovePar` when it lit), in order: one entry per pad lit so far. */
   pars: number[] = [];
   /** `moves` when the lit pad lit. */
@@ -726,6 +731,7 @@ export class PadChallenge {
     this.startedAt = -1;
     this.rolls = 0;
     this.moves = 0;
+    this.jumps = 0;
     this.pars = [];
     this.movesAtLight = 0;
     this.rolled = false;
@@ -744,9 +750,9 @@ export class PadChallenge {
   turned(): void {
     if (!this.done) this.moves++;
   }
-  /** Counts a jump, a move. */
+  /** Counts a jump in `jumps`, not in `moves`: a hop lands on the same cell with the same face up. */
   jumped(): void {
-    if (!this.done) this.moves++;
+    if (!this.done) this.jumps++;
   }
   /** The round's par so far: the sum of the lit pads' pars (each worked out when it lit), >= 0. */
   get par(): number {

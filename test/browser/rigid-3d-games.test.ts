@@ -1031,8 +1031,30 @@ describe('3D rigid-body games in headless Chromium', () => {
     });
   });
 
-  it('rotating-cube (room), 1280 x 800: a click on the page position of a floor cell (one behind the cube, one beside it, the pad) rests the cube on that cell; a click on its own cell says why it stays', async () => {
+  it('rotating-cube (room), 1280 x 800: a jump is free, a quarter turn is a move and says so; a click on the page position of a floor cell (one behind the cube, one beside it, the pad) rests the cube on that cell; a click on its own cell says why it stays', async () => {
     const g = await h.openGame('rotating-cube', { query: { seed: 11 }, viewport: { width: 1280, height: 800 }, readyTimeoutMs: 60_000 });
+    type Game = { challenge(): { moves: number; face: number }; pop(): { text: string; count: number } };
+    const moves = () => g.page.evaluate(() => (window.game as unknown as Game).challenge().moves);
+    // A hop lands on the same cell with the same face up: it costs no move (it cost one, and Space
+    // then Q on a fresh round spent the three-star budget before the cube had gone anywhere).
+    await waitCubeAtRest(g);
+    const face = await g.page.evaluate(() => (window.game as unknown as Game).challenge().face);
+    await g.press('Space');
+    await g.frames(3);
+    await waitCubeAtRest(g);
+    expect(await moves()).toBe(0);
+    expect(await g.page.evaluate(() => (window.game as unknown as Game).challenge().face)).toBe(face);
+    // A quarter turn changes what each roll brings up: a move, and its first use says so.
+    const pops = await g.page.evaluate(() => (window.game as unknown as Game).pop().count);
+    await g.press('q');
+    const said = await g.waitFor((n) => {
+      const p = (window.game as unknown as Game).pop();
+      return p.count > n ? p.text : null;
+    }, pops);
+    expect(said).toContain('quarter turn counts as a move');
+    expect(await moves()).toBe(1);
+    await g.frames(3);
+    await waitCubeAtRest(g);
     await expectClicksLandOnCells(g, (x, y) => g.page.mouse.click(x, y));
     expect(g.errors).toEqual([]);
     await g.close();

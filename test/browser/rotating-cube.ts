@@ -181,7 +181,11 @@ export async function expectRollsStraightUp(g: GamePage, roll: () => Promise<voi
  * the pop says why. Last the pad's own cell: the cube rests there and the pad counts.
  */
 export async function expectClicksLandOnCells(g: GamePage, click: (x: number, y: number) => Promise<void>): Promise<void> {
-  type Game = { challenge(): { pad: number; moves: number }; pop(): { text: string; count: number } };
+  type Game = {
+    challenge(): { pad: number; moves: number };
+    pop(): { text: string; count: number };
+    refused(): { count: number; shown: boolean };
+  };
   await waitCubeAtRest(g);
   const s0 = await cubeState(g);
   expect(s0.pad).toBe(0);
@@ -207,6 +211,7 @@ export async function expectClicksLandOnCells(g: GamePage, click: (x: number, y:
   // Its own cell: no move, none counted, a word why.
   const moves = await g.page.evaluate(() => (window.game as unknown as Game).challenge().moves);
   const pops = await g.page.evaluate(() => (window.game as unknown as Game).pop().count);
+  const refused = await g.page.evaluate(() => (window.game as unknown as Game).refused().count);
   const here = await stillPageOf(g, px, 0, pz - 1);
   await click(here.x, here.y);
   const said = await g.waitFor((n) => {
@@ -214,6 +219,8 @@ export async function expectClicksLandOnCells(g: GamePage, click: (x: number, y:
     return p.count > n ? p.text : null;
   }, pops);
   expect(said).toContain('on that cell');
+  // And a "can't go there" cue on the cell itself: a red ring flashed there (counted, shown now).
+  expect(await g.page.evaluate(() => (window.game as unknown as Game).refused().count)).toBe(refused + 1);
   await g.frames(3);
   expect(await g.page.evaluate(() => (window.game as unknown as Game).challenge().moves)).toBe(moves);
   const still = await cubeState(g);

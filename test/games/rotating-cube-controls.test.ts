@@ -24,6 +24,12 @@ describe('rotating cube legend', () => {
     for (const mode of ['cube', 'flip'] as const) expect(cubeControls(mode, false).some((c) => c.keys === 'Space')).toBe(false);
   });
 
+  it('room: the legend says a quarter turn counts as a move and a jump is free', () => {
+    expect(line('room', false, 'Q E')).toMatch(/\(counts as a move\)$/);
+    expect(line('room', true, 'Q E')).toMatch(/counts as a move/);
+    expect(line('room', false, 'Space')).toMatch(/^jump \(free: not a move\)$/);
+  });
+
   it('on a touch screen the room legend says a drag across the cube flicks it', () => {
     expect(line('room', true, 'Tap')).toMatch(/drag across the cube: flick it/);
     expect(line('room', false, 'Click')).toMatch(/^a floor cell: slide the cube onto it/);

@@ -1,6 +1,6 @@
-/** The room's round move count in the status row (games/rotating-cube/round-moves.ts). */
+/** The room's round move count in the status row and a reached pad's result words (games/rotating-cube/round-moves.ts). */
 import { describe, expect, it } from 'vitest';
-import { roundMovesText } from '../../games/rotating-cube/round-moves';
+import { padResultText, roundMovesText } from '../../games/rotating-cube/round-moves';
 import { PAR_SLACK } from '../../games/rotating-cube/scene';
 
 describe('roundMovesText', () => {
@@ -16,5 +16,20 @@ describe('roundMovesText', () => {
   it('throws on a count that is not a whole number >= 0', () => {
     expect(() => roundMovesText(-1, 3)).toThrow(/roundMovesText: moves must be an integer >= 0, got -1/);
     expect(() => roundMovesText(1, 2.5)).toThrow(/par must be an integer >= 0, got 2.5/);
+  });
+});
+
+describe('padResultText', () => {
+  it('one label for any optimal solution: a pad done in its best 1 move and one done in its best 2 both read "Perfect!"', () => {
+    // A player read "Perfect!" for pad 1 (best 1, done in 1) and only "on par" for pad 2 (best 2, done in 2).
+    expect(padResultText(1, 1)).toBe(' · Perfect!');
+    expect(padResultText(2, 2)).toBe(padResultText(1, 1));
+    expect(padResultText(0, 0)).toBe(' · Perfect!');
+    expect(padResultText(4, 2)).toBe(' · 4 moves, best 2');
+    expect(padResultText(3, 1)).toBe(' · 3 moves, best 1');
+  });
+  it('throws on a count that is not a whole number >= 0', () => {
+    expect(() => padResultText(-1, 2)).toThrow(/padResultText: moves must be an integer >= 0, got -1/);
+    expect(() => padResultText(1, 0.5)).toThrow(/par must be an integer >= 0, got 0.5/);
   });
 });

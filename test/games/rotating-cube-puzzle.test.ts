@@ -7,7 +7,7 @@
  * the cube on the pad with the face it wants in exactly par moves.
  */
 
-import { addSystem, createPhysicsWorld, type PhysicsWorld, setAngularVelocity, setVelocity, step } from '@bitphysics/physics';
+import { addSystem, applyImpulse, createPhysicsWorld, type PhysicsWorld, setAngularVelocity, setVelocity, step } from '@bitphysics/physics';
 import { describe, expect, it } from 'vitest';
 import {
   bedSnap,
@@ -26,6 +26,7 @@ import {
 import {
   buildRotatingCube,
   CELL_REACH,
+  JUMP_IMPULSE,
   PAD_BEDS,
   PAD_COUNT,
   PadChallenge,
@@ -231,6 +232,35 @@ describe('rotating-cube roll puzzle: the grid model', () => {
     // Far from the bed, and at a pad with no tiles (bed 0 or none), the target stays.
     expect(bedSnap(p, -2, 2)).toEqual([-2, 2]);
     expect(bedSnap({ ...p, bed: 0 }, 1.3, -0.3)).toEqual([1.3, -0.3]);
+  });
+});
+
+describe('rotating-cube roll puzzle: what a move is', () => {
+  it('a jump lands on the same cell with the same face up, so it costs no move; a quarter turn costs one', () => {
+    const { world, body: b } = rollingRoom();
+    const pads = new PadChallenge(padLayout(3));
+    addSystem(world, 'finalize', (w) => {
+      pads.update(w, b);
+    });
+    setDown(world, b, 1, -1, GRID_IDENTITY);
+    const top = topFace(world, b),
+      P = world.components.Position;
+    pads.start(world.time);
+    applyImpulse(world, b, [0, JUMP_IMPULSE, 0]);
+    pads.jumped();
+    let peak = 0;
+    for (let i = 0; i < 240; i++) {
+      step(world);
+      peak = Math.max(peak, P.y[b]!);
+    }
+    // It left the floor (a 1 m cube rests at 0.5 m) and came down on its cell (within 0.05 m), the same face up.
+    expect(peak).toBeGreaterThan(1);
+    expect(Math.hypot(P.x[b]! - 1, P.z[b]! + 1)).toBeLessThan(0.05);
+    expect(topFace(world, b)).toBe(top);
+    expect(pads.jumps).toBe(1);
+    expect(pads.moves).toBe(0);
+    pads.turned();
+    expect(pads.moves).toBe(1);
   });
 });
 
