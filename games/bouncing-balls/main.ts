@@ -1551,8 +1551,9 @@ let standTapAt = Number.NEGATIVE_INFINITY;
 canvas.addEventListener('pointerdown', (event) => {
   // (On a small screen a press on the field also closes an open drawer: game-kit's page layout.)
   if (grabbing || event.button !== 0 || pointerId !== -1 || drag.joint !== 0) return;
-  // The clock is out and the round waits for its last throw: no new one.
-  if (lastCall.aiming || lastCall.ball !== 0) return;
+  // The clock is out and the round waits for its last throw, or the round is over (the end card
+  // covers the box): no new throw, no pick-up.
+  if (lastCall.aiming || lastCall.ball !== 0 || round.phase === 'over') return;
   const [px, py] = local(event);
   const wx = renderer.camera.toWorldX(px),
     wy = renderer.camera.toWorldY(py);
@@ -2004,13 +2005,17 @@ type CutKind = 'ball' | 'ramp' | 'board' | 'rim' | 'net';
 const CUT_WORDS = {
   ball: 'hits a ball',
   ramp: 'hits the ramp',
-  board: 'off the board',
+  board: 'hits the board',
   rim: 'hits the hoop',
   net: 'hits the net',
 } as const;
 
-/** What the cut label says for the backboard until a throw shown so is let go (boardTaught): the rule, so a bank shot reads as a way in, not a miss. */
-const BOARD_RULE_WORDS = 'off the board · a bank shot still scores';
+/**
+ * What the cut label says for the backboard until a throw shown so is let go (boardTaught): only
+ * what is known, that the ball hits the board and may go in or bounce out (the arc ends there), so
+ * it reads neither as a miss nor as a basket ("a bank shot still scores" read as "this scores").
+ */
+const BOARD_RULE_WORDS = 'hits the board · may bounce in or out';
 /** Whether a throw has been let go with its arc cut by the backboard and BOARD_RULE_WORDS beside it (then the short words do). */
 let boardTaught = false;
 /** Whether the current press's arc showed BOARD_RULE_WORDS. */
