@@ -1197,6 +1197,7 @@ function local(event: PointerEvent): [number, number] {
  * Not longer on a phone: a throw from 1.5 m over the floor of its box has some 170 px of screen
  * under it to pull into, and the steepest baskets must fit in it with room to spare (a full pull of
  * 7.5 m of the court, 268 px there, left players at the screen's bottom edge short of the hoop).
+ * That is a mouse's; a finger's is FINGER_PULL_SCALE times longer, its room found by sliding up first.
  * The same for every press, wherever it begins (taken when the press begins), so a pull's power is
  * a function of its length alone. Pointer capture keeps the pull going past the canvas' and the
  * window's edge.
@@ -1204,6 +1205,14 @@ function local(event: PointerEvent): [number, number] {
 function fullPull(): number {
   return Math.min(420, Math.max(230, 0.6 * Math.min(canvas.clientWidth || innerWidth, canvas.clientHeight || innerHeight)));
 }
+
+/**
+ * How much longer a finger's full pull is than fullPull: gentler, so a few px of a finger change a
+ * throw less (at 234 px some 15 px moved a throw from the ramp to over the hoop). The room for it is
+ * found by sliding the finger up from the ball before pulling back (the anchor follows a finger above
+ * it: the pointermove handler), not bounded by the screen's edge next to the ball.
+ */
+const FINGER_PULL_SCALE = 1.5;
 
 /** Whether the current press is a finger's (pointer type 'touch'). */
 let pressFinger = false;
@@ -1551,8 +1560,9 @@ let standTapAt = Number.NEGATIVE_INFINITY;
 canvas.addEventListener('pointerdown', (event) => {
   // (On a small screen a press on the field also closes an open drawer: game-kit's page layout.)
   if (grabbing || event.button !== 0 || pointerId !== -1 || drag.joint !== 0) return;
-  // The clock is out and the round waits for its last throw: no new one.
-  if (lastCall.aiming || lastCall.ball !== 0) return;
+  // The clock is out and the round waits for its last throw, or the round is over (the end card
+  // covers the box): no new throw, no pick-up.
+  if (lastCall.aiming || lastCall.ball !== 0 || round.phase === 'over') return;
   const [px, py] = local(event);
   const wx = renderer.camera.toWorldX(px),
     wy = renderer.camera.toWorldY(py);
@@ -1586,7 +1596,7 @@ canvas.addEventListener('pointerdown', (event) => {
   boardSaid = false;
   slop = event.pointerType === 'touch' ? TOUCH_SLOP : CLICK_SLOP;
   pressFinger = event.pointerType === 'touch';
-  fullPullNow = fullPull();
+  fullPullNow = fullPull() * (pressFinger ? FINGER_PULL_SCALE : 1);
   holdStart = performance.now();
   clearTimeout(holdTimer);
   const { clientX, clientY, pointerId: id, pointerType, timeStamp } = event;
@@ -1641,6 +1651,10 @@ canvas.addEventListener('pointermove', (event) => {
   if (event.pointerId !== pointerId) return;
   [lastX, lastY] = local(event);
   if (Math.hypot(lastX - startX, lastY - startY) > slop) dragged = true;
+  // A finger above the pull's anchor would throw down, never a basket: the anchor follows it there,
+  // so a finger slid up from a ball into open space pulls back from where it is, with room below and
+  // to the side (a ball by the screen's edge or bottom boxed the pull in; FINGER_PULL_SCALE).
+  if (pressFinger && !pressStand && lastY < startY) [startX, startY] = [lastX, lastY];
 });
 
 /**
@@ -2004,13 +2018,17 @@ type CutKind = 'ball' | 'ramp' | 'board' | 'rim' | 'net';
 const CUT_WORDS = {
   ball: 'hits a ball',
   ramp: 'hits the ramp',
-  board: 'off the board',
+  board: 'hits the board',
   rim: 'hits the hoop',
   net: 'hits the net',
 } as const;
 
-/** What the cut label says for the backboard until a throw shown so is let go (boardTaught): the rule, so a bank shot reads as a way in, not a miss. */
-const BOARD_RULE_WORDS = 'off the board · a bank shot still scores';
+/**
+ * What the cut label says for the backboard until a throw shown so is let go (boardTaught): only
+ * what is known, that the ball hits the board and may go in or bounce out (the arc ends there), so
+ * it reads neither as a miss nor as a basket ("a bank shot still scores" read as "this scores").
+ */
+const BOARD_RULE_WORDS = 'hits the board · may bounce in or out';
 /** Whether a throw has been let go with its arc cut by the backboard and BOARD_RULE_WORDS beside it (then the short words do). */
 let boardTaught = false;
 /** Whether the current press's arc showed BOARD_RULE_WORDS. */

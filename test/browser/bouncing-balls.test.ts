@@ -706,6 +706,18 @@ describe('bouncing balls: the hoop game', () => {
     await g.runUntil(() => (window.game as unknown as HoopGame).round().phase === 'over', null, { draw: false });
     await g.frames(2);
     expect(await status.textContent()).toMatch(/Time!/);
+    // Once the round is over nothing is thrown or aimed behind the end card: the same pull as above
+    // (on a playing round it aims and throws) shows no arc and adds no throw (a stranger aimed and
+    // threw balls behind the card).
+    const overShots = await g.page.evaluate(() => (window.game as unknown as HoopGame).round().shots);
+    await g.page.mouse.move(press.x, press.y);
+    await g.page.mouse.down();
+    await g.page.mouse.move(pull.x, pull.y, { steps: 4 });
+    const overAim = await g.page.evaluate(() => (window.game as unknown as HoopGame).aimPath().length);
+    await g.page.mouse.up();
+    await g.frames(2);
+    expect(overAim).toBe(0);
+    expect(await g.page.evaluate(() => (window.game as unknown as HoopGame).round().shots)).toBe(overShots);
     // The end card over the box: the round's points, its baskets and the best.
     const card = await g.page.evaluate(() => {
       const stage = (
@@ -1494,6 +1506,47 @@ describe('bouncing balls: the hoop game', () => {
       expect(await g.page.evaluate(() => document.querySelector('.bp-error')?.textContent ?? '')).toBe('');
       await g.page.evaluate(() => (window.game as unknown as { reset(): void }).reset());
     });
+    it('phone 390 x 844, touch: a finger slid up from a ball by the left wall pulls back from where it is, not from the ball', async () => {
+      // A page of its own: the throw ends the shared page's first-throw hints the next test reads.
+      const g = await h.openGame('bouncing-balls', { viewport: { width: 390, height: 844 }, touch: true, query: { count: 8 } });
+      type Slide = AimGame & { spawn(x: number, y: number): number; positions(): number[] };
+      await g.page.evaluate(() => {
+        const game = window.game as unknown as Slide;
+        game.paused = true;
+        for (const id of game.ballIds()) game.remove(id);
+        game.spawn(1, 1.5);
+      });
+      const shots = await g.page.evaluate(() => (window.game as unknown as Slide).round().shots);
+      const at = await g.page.evaluate(() => (window.game as unknown as Slide).positions());
+      const from = await g.worldToPage(at[0]!, at[1]!);
+      // Pressed on the ball, slid up and right into open space (the pull's anchor follows a finger
+      // above it), then pulled 60 px left and 200 px down from there: the ball leaves up and right,
+      // away from that pull. Measured from the ball (the old anchor) the finger ends 60 px right of it
+      // and 50 px above: a throw down and left. Not possible from the ball itself: 60 px left of it is
+      // off the screen's edge for a ball this close to the wall.
+      await swipe(g.page, [
+        [from.x, from.y],
+        [from.x + 20, from.y - 60],
+        [from.x + 120, from.y - 250],
+        [from.x + 90, from.y - 150],
+        [from.x + 60, from.y - 50],
+      ]);
+      const v = await g.page.evaluate(() => {
+        const game = window.game as unknown as Slide & { world: { components: { Velocity: { x: Float64Array; y: Float64Array } } } };
+        const e = game.ballIds()[0]! % 2 ** 25;
+        return { vx: game.world.components.Velocity.x[e]!, vy: game.world.components.Velocity.y[e]!, shots: game.round().shots };
+      });
+      expect(v.shots).toBe(shots + 1);
+      expect(v.vx).toBeGreaterThan(0);
+      expect(v.vy).toBeGreaterThan(0);
+      // The direction is the pull's within the assist's reach (it changes only the length): 200/60 up.
+      expect(v.vy / v.vx).toBeCloseTo(200 / 60, 0);
+      await g.page.evaluate(() => {
+        (window.game as unknown as Slide).paused = false;
+      });
+      expect(g.errors).toEqual([]);
+      await g.close();
+    });
   });
 });
 
@@ -1608,14 +1661,14 @@ describe('bouncing balls: cancelling, full-power pulls and the end of a round mi
       expect(longer.power).toBe(Math.round((100 * slingSpeed(Math.hypot(dx, dy + 5), got[0]!.fullPull)) / 20));
       expect(longer.power - got[0]!.power).toBeGreaterThan(0);
       expect(longer.power - got[0]!.power).toBeLessThanOrEqual(2);
-      // The full pull is 60 % of the canvas' shorter side within [230, 420] px (main.ts fullPull): on a
-      // phone short enough that the steepest baskets' pulls fit in the screen under the pile.
+      // The full pull is 60 % of the canvas' shorter side within [230, 420] px (main.ts fullPull), a
+      // finger's 1.5 times that (FINGER_PULL_SCALE: gentler; the room is found by sliding up first).
       const side = await g.page.evaluate(() => {
         const c = document.querySelector('canvas')!;
         return Math.min(c.clientWidth, c.clientHeight);
       });
-      expect(got[0]!.fullPull).toBeCloseTo(Math.min(420, Math.max(230, 0.6 * side)), 9);
-      if (phone) expect(got[0]!.fullPull).toBeLessThan(240);
+      expect(got[0]!.fullPull).toBeCloseTo(Math.min(420, Math.max(230, 0.6 * side)) * (phone ? 1.5 : 1), 9);
+      if (phone) expect(got[0]!.fullPull).toBeLessThan(360);
       // A tap (a click, or a finger's tap) on the hoop's rim drops no ball into its net (one did, dead,
       // under the rim's line): the ball count stays and the hint says how to score.
       const rim = await g.page.evaluate(() => {
@@ -2137,7 +2190,7 @@ describe('bouncing balls: cancelling, full-power pulls and the end of a round mi
     await g.close();
   });
 
-  it('desktop 1280 x 800, mouse: an arc that ends on the backboard is not labelled as a block ("off the board")', async () => {
+  it('desktop 1280 x 800, mouse: an arc that ends on the backboard is not labelled as a block ("hits the board")', async () => {
     const g = await h.openGame('bouncing-balls', { viewport: { width: 1280, height: 800 }, query: { count: 8 } });
     type CutGame = AimGame & {
       spawn(x: number, y: number): number;
@@ -2174,9 +2227,11 @@ describe('bouncing balls: cancelling, full-power pulls and the end of a round mi
     expect(Math.abs(cut!.x - ax)).toBeLessThan(0.4 * 1.4 + HOOP_RADIUS + 0.05);
     expect(cut!.y).toBeGreaterThan(ay - 0.4 * 1.4 - HOOP_RADIUS - 0.05);
     expect(cut!.y).toBeLessThan(by + 0.4 * 1.4 + HOOP_RADIUS + 0.05);
-    // Said neutrally: no "hits", not the hoop; the first time, with the rule (a bank shot still scores).
-    expect(cut!.words).toBe('off the board · a bank shot still scores');
-    expect(cut!.words).not.toMatch(/hits|hoop|✗/);
+    // Said as it is: the board, not the hoop, and no promise of a basket (a stranger read "a bank
+    // shot still scores" as "this will score" and the ball bounced out); the first time, that it may
+    // go either way.
+    expect(cut!.words).toBe('hits the board · may bounce in or out');
+    expect(cut!.words).not.toMatch(/scor|hoop|✗/);
     await m.move(from.x, from.y, { steps: 4 });
     await m.up();
     // A cancelled pull teaches nothing: pulled the same way again, the rule is still said. Let go,
@@ -2188,7 +2243,7 @@ describe('bouncing balls: cancelling, full-power pulls and the end of a round mi
       await g.frames(2);
       return g.page.evaluate(() => (window.game as unknown as CutGame).aimCut()?.words);
     };
-    expect(await boardWords()).toBe('off the board · a bank shot still scores');
+    expect(await boardWords()).toBe('hits the board · may bounce in or out');
     await m.up();
     const thrown = await g.page.evaluate(() => {
       const game = window.game as unknown as CutGame & HoopGame & { step(): void };
@@ -2199,7 +2254,7 @@ describe('bouncing balls: cancelling, full-power pulls and the end of a round mi
       return shots;
     });
     expect(thrown).toBe(1);
-    expect(await boardWords()).toBe('off the board');
+    expect(await boardWords()).toBe('hits the board');
     await m.move(from.x, from.y, { steps: 4 });
     await m.up();
     expect(g.errors).toEqual([]);
