@@ -1173,6 +1173,8 @@ const PULL_HOOK_ACCEL = 5;
  * not yet where it is drawn (held up against a piece): the swing goes from where the ball is.
  */
 const PULL_WAIT = 0.3;
+/** Seconds after the player let go, with the hook in place but held up over a piece beside the drawn-back ball, that the line slips from there. */
+const PULL_STUCK = 2;
 /** Distance across the ground, m, from the hook's goal within which it lets the ball down from CRUISE_HEIGHT (at HOIST_SPEED, about as long as the rest of its run). */
 const PULL_LOWER = 2;
 /**
@@ -1262,10 +1264,22 @@ function segmentToAxis(ax: number, az: number, bx: number, bz: number): number {
 function pullStep(world: PhysicsWorld, h: WreckingBallHandles, pull: PullBack, dt: number): void {
   const c = h.crane;
   const [hx, , hz] = hookPosition(c);
-  const [gx, gy, gz] = hookPosition({ angle: Math.atan2(-pull.z, pull.x), radius: Math.hypot(pull.x, pull.z), height: pull.height });
-  const inPlace = Math.hypot(hx - gx, hz - gz) < 0.05 && Math.abs(hookPosition(c)[1] - gy) < 0.1;
+  const [gx, , gz] = hookPosition({ angle: Math.atan2(-pull.z, pull.x), radius: Math.hypot(pull.x, pull.z), height: pull.height });
+  const P = world.components.Position,
+    b = h.ball;
+  // Far from its goal the hook carries the ball high (CRUISE_HEIGHT), and lets it down to the
+  // strike's height over the last PULL_LOWER m; never lower than keeps the ball over every piece
+  // between where it is and where it goes (its next stop: under the goal, or drawn back from it).
+  const far = Math.hypot(hx - gx, hz - gz) > PULL_LOWER;
+  const to = far ? [gx, gz] : [gx - pull.offset * pull.ux, gz - pull.offset * pull.uz];
+  const over = carryHeight(world, h.pieces, P.x[b]!, P.z[b]!, to[0]!, to[1]!, far ? CARRY_SIDE : CARRY_NEAR_SIDE);
+  const want = Math.max(far ? Math.max(pull.height, CRUISE_HEIGHT) : pull.height, over);
+  // In place at the height that keeps the ball clear (the strike's, or over a piece beside the
+  // drawn-back ball: the swing then goes from there).
+  const inPlace = Math.hypot(hx - gx, hz - gz) < 0.05 && Math.abs(c.height - want) < 0.1;
+  const atStrike = Math.abs(c.height - pull.height) < 0.1;
   if (pull.letGo && inPlace) pull.waited += dt;
-  if (pull.letGo && inPlace && (pullReady(world, h, pull) || pull.waited > PULL_WAIT)) {
+  if (pull.letGo && inPlace && ((atStrike && (pullReady(world, h, pull, want) || pull.waited > PULL_WAIT)) || pull.waited > PULL_STUCK)) {
     h.controls.pull = null;
     if (pull.offset === 0) return;
     const hold = SWING_PERIOD / 4 + 0.4;
@@ -1283,15 +1297,6 @@ function pullStep(world: PhysicsWorld, h: WreckingBallHandles, pull: PullBack, d
     ];
     return;
   }
-  const P = world.components.Position,
-    b = h.ball;
-  // Far from its goal the hook carries the ball high (CRUISE_HEIGHT), and lets it down to the
-  // strike's height over the last PULL_LOWER m; never lower than keeps the ball over every piece
-  // between where it is and where it goes (its next stop: under the goal, or drawn back from it).
-  const far = Math.hypot(hx - gx, hz - gz) > PULL_LOWER;
-  const to = far ? [gx, gz] : [gx - pull.offset * pull.ux, gz - pull.offset * pull.uz];
-  const over = carryHeight(world, h.pieces, P.x[b]!, P.z[b]!, to[0]!, to[1]!, far ? CARRY_SIDE : CARRY_NEAR_SIDE);
-  const want = Math.max(far ? Math.max(pull.height, CRUISE_HEIGHT) : pull.height, over);
   // Slew and trolley each on a braking profile (speeding up at PULL_HOOK_ACCEL, slowing to stop at
   // the goal), the slew's rates those of the hook across the ground at its radius; braking to a
   // stop while the hook is too low to carry the ball over what lies ahead.
@@ -1373,10 +1378,10 @@ function closeOn(v: number, e: number, top: number, accel: number, dt: number): 
   return v + Math.max(-accel * dt, Math.min(accel * dt, want - v));
 }
 
-/** Whether the hook is at its goal and the ball where the tagline draws it and nearly still: the line may slip. */
-function pullReady(world: PhysicsWorld, h: WreckingBallHandles, pull: PullBack): boolean {
-  const [hx, hy, hz] = hookPosition(h.crane);
-  if (Math.hypot(hx - pull.x, hz - pull.z) > 0.08 || Math.abs(hy - pull.height) > 0.1) return false;
+/** Whether the hook is at its goal (at crane height `height`) and the ball where the tagline draws it and nearly still: the line may slip. */
+function pullReady(world: PhysicsWorld, h: WreckingBallHandles, pull: PullBack, height: number): boolean {
+  const [hx, , hz] = hookPosition(h.crane);
+  if (Math.hypot(hx - pull.x, hz - pull.z) > 0.08 || Math.abs(h.crane.height - height) > 0.1) return false;
   const P = world.components.Position,
     V = world.components.Velocity,
     b = h.ball;
