@@ -86,6 +86,7 @@ import {
   buildWreckingBall,
   CHAIN_LINKS,
   type ClearScore,
+  clearReached,
   clearScore,
   clearScoreLine,
   clearTarget,
@@ -250,7 +251,8 @@ function gameStep(world: PhysicsWorld): void {
     if (!cleared) levelScore += gained;
     if (reachedAt >= 0) reachedAt = world.time;
   }
-  if (!cleared && reachedAt < 0 && fallenCount(handles.pieces) >= clearTarget(handles.pieces, handles.level)) {
+  const target = clearTarget(handles.pieces, handles.level);
+  if (!cleared && reachedAt < 0 && clearReached(fallenCount(handles.pieces), target, pulling())) {
     reachedAt = world.time;
     reachedWith = swingsUsed();
   }
@@ -266,6 +268,11 @@ function gameStep(world: PhysicsWorld): void {
     clearedWith.score = clearScore(levelScore, clearedWith.stars);
     levelScore = clearedWith.score.total;
   }
+}
+/** Whether a drag's tagline holds the ball, or has slipped and its swing's run has not yet begun (is not yet counted). */
+function pulling(): boolean {
+  const k = handles.controls;
+  return k.pull !== null || (k.moves[0]?.release === true && k.moves[0].elapsed === 0);
 }
 /** Seconds with no piece falling after the clear target is reached before the result is given. */
 const CLEAR_SETTLE = 1;

@@ -1173,6 +1173,8 @@ const PULL_HOOK_ACCEL = 5;
  * not yet where it is drawn (held up against a piece): the swing goes from where the ball is.
  */
 const PULL_WAIT = 0.3;
+/** Seconds after the player let go, with the hook in place but held up over a piece beside the drawn-back ball, that the line slips from there. */
+const PULL_STUCK = 2;
 /** Distance across the ground, m, from the hook's goal within which it lets the ball down from CRUISE_HEIGHT (at HOIST_SPEED, about as long as the rest of its run). */
 const PULL_LOWER = 2;
 /**
@@ -1262,10 +1264,22 @@ function segmentToAxis(ax: number, az: number, bx: number, bz: number): number {
 function pullStep(world: PhysicsWorld, h: WreckingBallHandles, pull: PullBack, dt: number): void {
   const c = h.crane;
   const [hx, , hz] = hookPosition(c);
-  const [gx, gy, gz] = hookPosition({ angle: Math.atan2(-pull.z, pull.x), radius: Math.hypot(pull.x, pull.z), height: pull.height });
-  const inPlace = Math.hypot(hx - gx, hz - gz) < 0.05 && Math.abs(hookPosition(c)[1] - gy) < 0.1;
+  const [gx, , gz] = hookPosition({ angle: Math.atan2(-pull.z, pull.x), radius: Math.hypot(pull.x, pull.z), height: pull.height });
+  const P = world.components.Position,
+    b = h.ball;
+  // Far from its goal the hook carries the ball high (CRUISE_HEIGHT), and lets it down to the
+  // strike's height over the last PULL_LOWER m; never lower than keeps the ball over every piece
+  // between where it is and where it goes (its next stop: under the goal, or drawn back from it).
+  const far = Math.hypot(hx - gx, hz - gz) > PULL_LOWER;
+  const to = far ? [gx, gz] : [gx - pull.offset * pull.ux, gz - pull.offset * pull.uz];
+  const over = carryHeight(world, h.pieces, P.x[b]!, P.z[b]!, to[0]!, to[1]!, far ? CARRY_SIDE : CARRY_NEAR_SIDE);
+  const want = Math.max(far ? Math.max(pull.height, CRUISE_HEIGHT) : pull.height, over);
+  // In place at the height that keeps the ball clear (the strike's, or over a piece beside the
+  // drawn-back ball: the swing then goes from there).
+  const inPlace = Math.hypot(hx - gx, hz - gz) < 0.05 && Math.abs(c.height - want) < 0.1;
+  const atStrike = Math.abs(c.height - pull.height) < 0.1;
   if (pull.letGo && inPlace) pull.waited += dt;
-  if (pull.letGo && inPlace && (pullReady(world, h, pull) || pull.waited > PULL_WAIT)) {
+  if (pull.letGo && inPlace && ((atStrike && (pullReady(world, h, pull, want) || pull.waited > PULL_WAIT)) || pull.waited > PULL_STUCK)) {
     h.controls.pull = null;
     if (pull.offset === 0) return;
     const hold = SWING_PERIOD / 4 + 0.4;
@@ -1284,25 +1298,19 @@ function pullStep(world: PhysicsWorld, h: WreckingBallHandles, pull: PullBack, d
     return;
   }
   // Slew and trolley each on a braking profile (speeding up at PULL_HOOK_ACCEL, slowing to stop at
-  // the goal), the slew's rates those of the hook across the ground at its radius.
+  // the goal), the slew's rates those of the hook across the ground at its radius; braking to a
+  // stop while the hook is too low to carry the ball over what lies ahead.
   const r = Math.max(RADIUS_RANGE[0], c.radius);
-  h.drive.slew = closeOn(h.drive.slew, wrap(Math.atan2(-pull.z, pull.x) - c.angle), PULL_HOOK_SPEED / r, PULL_HOOK_ACCEL / r, dt);
-  h.drive.trolley = closeOn(h.drive.trolley, Math.hypot(pull.x, pull.z) - c.radius, PULL_HOOK_SPEED, PULL_HOOK_ACCEL, dt);
-  // Far from its goal the hook carries the ball high (CRUISE_HEIGHT), over the structures on its
-  // way, and lets it down to the strike's height over the last PULL_LOWER m.
-  const far = Math.hypot(hx - gx, hz - gz) > PULL_LOWER;
-  const lift = Math.max(
-    -HOIST_SPEED * dt,
-    Math.min(HOIST_SPEED * dt, (far ? Math.max(pull.height, CRUISE_HEIGHT) : pull.height) - c.height),
-  );
+  const low = c.height < over - CARRY_SLACK;
+  h.drive.slew = closeOn(h.drive.slew, low ? 0 : wrap(Math.atan2(-pull.z, pull.x) - c.angle), PULL_HOOK_SPEED / r, PULL_HOOK_ACCEL / r, dt);
+  h.drive.trolley = closeOn(h.drive.trolley, low ? 0 : Math.hypot(pull.x, pull.z) - c.radius, PULL_HOOK_SPEED, PULL_HOOK_ACCEL, dt);
+  const lift = Math.max(-PULL_HOIST_SPEED * dt, Math.min(PULL_HOIST_SPEED * dt, want - c.height));
   c.angle = wrap(c.angle + h.drive.slew * dt);
   c.radius = Math.min(RADIUS_RANGE[1], Math.max(RADIUS_RANGE[0], c.radius + h.drive.trolley * dt));
   c.height = Math.min(HOOK_RANGE[1], Math.max(HOOK_RANGE[0], c.height + lift));
-  const P = world.components.Position,
-    V = world.components.Velocity,
+  const V = world.components.Velocity,
     F = world.components.Force,
-    M = world.components.Mass,
-    b = h.ball;
+    M = world.components.Mass;
   const [nx, , nz] = hookPosition(c);
   // On its way the line holds the ball under the hook (drawn back, it swung wide and through what it
   // passed); over the last PULL_LOWER m it draws it back.
@@ -1324,6 +1332,40 @@ function pullStep(world: PhysicsWorld, h: WreckingBallHandles, pull: PullBack, d
   F.z[b] = F.z[b]! + m * az;
 }
 
+/** Rate, m/s, the hook is raised and lowered while the tagline holds the ball (twice HOIST_SPEED: it lifts the ball over the pieces on its way without holding the run up long). */
+const PULL_HOIST_SPEED = 2 * HOIST_SPEED;
+/** Room, m, the carried ball's underside keeps over the top of a piece it passes over. */
+const CARRY_CLEAR = 0.3;
+/** Room, m, across the ground either side of the carried ball's way (it lags and sways on its chain while the hook runs). */
+const CARRY_SIDE = 1;
+/** Room, m, across the ground either side of the ball's way as it is drawn back (it lags the line's pull). */
+const CARRY_NEAR_SIDE = 0.2;
+/** How far, m, the hook may be below the height that carries the ball over what lies ahead and still run on (it rises as it goes). */
+const CARRY_SLACK = 0.5;
+
+/**
+ * Lowest hook height, m (within HOOK_RANGE; HOOK_RANGE[0] when nothing is in the way), that keeps
+ * the ball hanging on its chain CARRY_CLEAR over every standing piece whose top lies within the
+ * ball's radius and `side` m of its way across the ground from (ax, az) to (bx, bz) (a piece
+ * reaching its half diagonal across the ground and its half height up: it still stands).
+ */
+function carryHeight(world: PhysicsWorld, pieces: Piece[], ax: number, az: number, bx: number, bz: number, side: number): number {
+  const P = world.components.Position;
+  let top = Number.NEGATIVE_INFINITY;
+  for (const q of pieces) {
+    if (q.fallen) continue;
+    const reach = Math.hypot(q.half[0], q.half[2]);
+    const px = P.x[q.body]!,
+      pz = P.z[q.body]!;
+    const dx = bx - ax,
+      dz = bz - az,
+      l2 = dx * dx + dz * dz;
+    const t = l2 < 1e-12 ? 0 : Math.min(1, Math.max(0, ((px - ax) * dx + (pz - az) * dz) / l2));
+    if (Math.hypot(ax + t * dx - px, az + t * dz - pz) < reach + BALL_RADIUS + side) top = Math.max(top, P.y[q.body]! + q.half[1]);
+  }
+  return Math.min(HOOK_RANGE[1], Math.max(HOOK_RANGE[0], top + CARRY_CLEAR + BALL_RADIUS + HANG));
+}
+
 /**
  * Rate `v` (per s) of a drive `e` short of its goal after the next `dt` s: toward the rate that stops
  * it at the goal at `accel` (sqrt(2 accel e), at most `top`), changing by `accel` dt at most; exactly
@@ -1336,10 +1378,10 @@ function closeOn(v: number, e: number, top: number, accel: number, dt: number): 
   return v + Math.max(-accel * dt, Math.min(accel * dt, want - v));
 }
 
-/** Whether the hook is at its goal and the ball where the tagline draws it and nearly still: the line may slip. */
-function pullReady(world: PhysicsWorld, h: WreckingBallHandles, pull: PullBack): boolean {
-  const [hx, hy, hz] = hookPosition(h.crane);
-  if (Math.hypot(hx - pull.x, hz - pull.z) > 0.08 || Math.abs(hy - pull.height) > 0.1) return false;
+/** Whether the hook is at its goal (at crane height `height`) and the ball where the tagline draws it and nearly still: the line may slip. */
+function pullReady(world: PhysicsWorld, h: WreckingBallHandles, pull: PullBack, height: number): boolean {
+  const [hx, , hz] = hookPosition(h.crane);
+  if (Math.hypot(hx - pull.x, hz - pull.z) > 0.08 || Math.abs(h.crane.height - height) > 0.1) return false;
   const P = world.components.Position,
     V = world.components.Velocity,
     b = h.ball;
@@ -1585,6 +1627,17 @@ export function swingBudget(level: number): number {
 export function swingPar(level: number): number {
   if (!Number.isInteger(level) || level < 1) throw new RangeError(`swingPar: level must be an integer >= 1, got ${level}`);
   return level <= 3 ? 2 : 3;
+}
+
+/**
+ * Whether a level's clear target is reached now, to be credited to the swings used so far: as many
+ * pieces `fallen` as its `target` and no tagline holding the ball
+ * (`pulling`: a drag held, or let go and not yet slipped). Pieces that fall while the ball is drawn
+ * back are credited to that swing once it is let go and counted, so the swings a result names are
+ * the swings the player used.
+ */
+export function clearReached(fallen: number, target: number, pulling: boolean): boolean {
+  return fallen >= target && !pulling;
 }
 
 /**

@@ -4,7 +4,7 @@
  */
 
 import { describe, expect, it } from 'vitest';
-import { clearScore, clearScoreLine, starsRule, swingBudget, swingStars } from '../../games/wrecking-ball/scene';
+import { clearReached, clearScore, clearScoreLine, starsRule, swingBudget, swingStars } from '../../games/wrecking-ball/scene';
 
 describe('wrecking-ball clear score', () => {
   it("gives a stranger's jump from 396 to 1396 on a two-star clear, part by part", () => {
@@ -44,5 +44,23 @@ describe('wrecking-ball clear score', () => {
       expect(swingStars(one!, true, level)).toBe(1);
       expect(swingStars(swingBudget(level), true, level)).toBe(1);
     }
+  });
+  it('credits pieces felled while a drag is held to that swing once it is let go', () => {
+    // The stranger's level 2: two swings used, the third drag held (the tagline drawing the ball
+    // back) while the last pieces needed fell; then let go. The page fixes the swings when the
+    // target is first reached (main.ts gameStep): it must name 3 swings, not 2.
+    const frames = [
+      { fallen: 5, swings: 2, pulling: false },
+      { fallen: 8, swings: 2, pulling: true },
+      { fallen: 13, swings: 2, pulling: true },
+      { fallen: 13, swings: 2, pulling: true },
+      { fallen: 13, swings: 3, pulling: false },
+    ];
+    const target = 10;
+    const reachedWith = frames.find((f) => clearReached(f.fallen, target, f.pulling))?.swings;
+    expect(reachedWith).toBe(3);
+    expect(swingStars(reachedWith!, true, 2)).toBe(swingStars(3, true, 2));
+    expect(clearReached(9, target, false)).toBe(false);
+    expect(clearReached(10, target, false)).toBe(true);
   });
 });
