@@ -930,16 +930,7 @@ export function aimAt(world: PhysicsWorld, h: WreckingBallHandles, piece: number
     );
   const speed = request?.speed ?? HIT_SPEED;
   const P = world.components.Position;
-  const tapped = h.pieces.find((q) => q.body === piece);
-  const structure = tapped ? structureOf(h.pieces, tapped) : [];
-  // Where the ball strikes across the ground: the piece tapped in a wall (a brick along it), the
-  // middle of a plank stack or a tower, so a plank tapped at the stack's edge is not only glanced off.
-  let tx = P.x[piece]!,
-    tz = P.z[piece]!;
-  if (tapped && tapped.kind !== 'wall' && structure.length > 0) {
-    tx = structure.reduce((a, q) => a + P.x[q.body]!, 0) / structure.length;
-    tz = structure.reduce((a, q) => a + P.z[q.body]!, 0) / structure.length;
-  }
+  const { tapped, structure, tx, tz } = strikeSpot(world, h, piece);
   // The ball's centre at the piece's height, never lower than skimming the ground. The player's
   // swing (a request) strikes the piece chosen where it is: at a tower's top it knocks off the top,
   // at its foot it brings down what stands on it, so where the player aims is the skill. A swing
@@ -1200,14 +1191,7 @@ const READY_STILL = 1;
  */
 export function pullBack(world: PhysicsWorld, h: WreckingBallHandles, piece: number, request: SwingRequest): void {
   const P = world.components.Position;
-  const tapped = h.pieces.find((q) => q.body === piece);
-  const structure = tapped ? structureOf(h.pieces, tapped) : [];
-  let tx = P.x[piece]!,
-    tz = P.z[piece]!;
-  if (tapped && tapped.kind !== 'wall' && structure.length > 0) {
-    tx = structure.reduce((a, q) => a + P.x[q.body]!, 0) / structure.length;
-    tz = structure.reduce((a, q) => a + P.z[q.body]!, 0) / structure.length;
-  }
+  const { structure, tx, tz } = strikeSpot(world, h, piece);
   const ballY = Math.max(BALL_RADIUS + 0.05, P.y[piece]!);
   const height = Math.min(HOOK_RANGE[1], Math.max(HOOK_RANGE[0], ballY + HANG));
   const r0 = Math.min(RADIUS_RANGE[1], Math.max(RADIUS_RANGE[0], Math.hypot(tx, tz)));
@@ -1244,8 +1228,30 @@ export function dropPull(h: WreckingBallHandles): void {
   pull.letGo = true;
 }
 
+/**
+ * Where a swing at `piece` strikes across the ground (tx, tz, m): the piece itself in a wall (a brick
+ * along it), else the middle of its plank stack or tower, so a plank tapped at the stack's edge is not
+ * only glanced off. Also the piece's record (undefined if `piece` is no piece) and its structure.
+ */
+function strikeSpot(
+  world: PhysicsWorld,
+  h: WreckingBallHandles,
+  piece: number,
+): { tapped: Piece | undefined; structure: Piece[]; tx: number; tz: number } {
+  const P = world.components.Position;
+  const tapped = h.pieces.find((q) => q.body === piece);
+  const structure = tapped ? structureOf(h.pieces, tapped) : [];
+  let tx = P.x[piece]!,
+    tz = P.z[piece]!;
+  if (tapped && tapped.kind !== 'wall' && structure.length > 0) {
+    tx = structure.reduce((a, q) => a + P.x[q.body]!, 0) / structure.length;
+    tz = structure.reduce((a, q) => a + P.z[q.body]!, 0) / structure.length;
+  }
+  return { tapped, structure, tx, tz };
+}
+
 /** Nearest distance, m, across the ground from the mast's axis to the segment from (ax, az) to (bx, bz). */
-function segmentToAxis(ax: number, az: number, bx: number, bz: number): number {
+export function segmentToAxis(ax: number, az: number, bx: number, bz: number): number {
   const dx = bx - ax,
     dz = bz - az,
     l2 = dx * dx + dz * dz;

@@ -16,6 +16,7 @@ import {
   pullBack,
   type SwingRequest,
   scorePieces,
+  segmentToAxis,
   swingSpeed,
   wreckingBallWorldOptions,
 } from '../../games/wrecking-ball/scene';
@@ -91,7 +92,7 @@ function play(g: Gesture, untilSlip = false): { toHit: number; fell: boolean; ma
   const held = (): void => {
     if (h.controls.pull === null) return;
     const [hx, , hz] = hookPosition(h.crane);
-    mast = Math.min(mast, axisDistance(hx, hz, P.x[h.ball]!, P.z[h.ball]!));
+    mast = Math.min(mast, segmentToAxis(hx, hz, P.x[h.ball]!, P.z[h.ball]!));
   };
   for (let t = 0; t < g.hold - 1e-9; t += world.dt) {
     step(world);
@@ -115,15 +116,6 @@ function play(g: Gesture, untilSlip = false): { toHit: number; fell: boolean; ma
     }
   }
   return { toHit: Number.POSITIVE_INFINITY, fell: piece.fallen, mast, early, slipping };
-}
-
-/** Nearest distance, m, across the ground from the mast's axis to the segment from the hook (ax, az) to the ball (bx, bz). */
-function axisDistance(ax: number, az: number, bx: number, bz: number): number {
-  const dx = bx - ax,
-    dz = bz - az,
-    l2 = dx * dx + dz * dz;
-  const t = l2 < 1e-12 ? 0 : Math.min(1, Math.max(0, -(ax * dx + az * dz) / l2));
-  return Math.hypot(ax + t * dx, az + t * dz);
 }
 
 /** Steps 2.5 s more (the structure falling) and says whether the piece fell. */
