@@ -5,6 +5,7 @@
  * (windAt), so a gust shows before the sheet answers it. Drawing only: the streaks and leaves are not
  * bodies of the world.
  */
+import { seededRandom } from '@bitphysics/game-kit';
 import { type PhysicsWorld, windAt } from '@bitphysics/physics';
 import type { Camera } from '@bitphysics/render-pixi';
 import { Container, Graphics, Sprite, Texture } from 'pixi.js';
@@ -24,18 +25,6 @@ function gradient(stops: readonly [number, string][]): Texture {
   g.fillStyle = grad;
   g.fillRect(0, 0, 1, 256);
   return Texture.from(c);
-}
-
-/** A small deterministic random number generator (mulberry32) for the scenery's details. */
-function random(seed: number): () => number {
-  let s = seed >>> 0;
-  return () => {
-    s = (s + 0x6d2b79f5) >>> 0;
-    let t = s;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
 }
 
 interface Streak {
@@ -70,7 +59,7 @@ export class Yard {
   private readonly air = new Graphics({ label: 'air' });
   private readonly streaks: Streak[] = [];
   private readonly leaves: Leaf[] = [];
-  private readonly rand = random(7);
+  private readonly rand = seededRandom(7);
   private readonly wind = new Float64Array(3);
   private sceneryKey = '';
   /** Streaks drawn in the last frame (tests). */
@@ -137,7 +126,7 @@ export class Yard {
     const ground = Y(0);
     // Far hills, two layers.
     const hills = (base: number, amp: number, seed: number, color: number): void => {
-      const r = random(seed);
+      const r = seededRandom(seed);
       g.moveTo(0, ground);
       const phase = r() * 6;
       for (let x = 0; x <= W + 20; x += 20) {
@@ -198,7 +187,7 @@ export class Yard {
       }
       g.rect(right - Math.max(2, S(0.05)), 0, Math.max(2, S(0.05)), ground).fill({ color: 0x6e3426 });
       // Ivy up the wall's edge, and on a wide screen a wooden gate in it.
-      const ivy = random(11);
+      const ivy = seededRandom(11);
       for (let k = 0; k < 40; k++) {
         const y = ground - S(3.2) * ivy() ** 1.5,
           x = right + S(0.35) * ivy() ** 2;

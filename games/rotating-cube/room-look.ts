@@ -7,6 +7,7 @@
  * beam of light rising from it). Every texture is drawn in code on a canvas. Kept light for software
  * WebGL: about a dozen meshes, shared geometries and materials, no extra lights.
  */
+import { seededRandom } from '@bitphysics/game-kit';
 import {
   AdditiveBlending,
   BackSide,
@@ -29,18 +30,6 @@ import {
   type Vector3,
 } from 'three';
 
-/** A seeded pseudo-random generator in [0, 1) (mulberry32): the same pictures every load. */
-function random(seed: number): () => number {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
-
 /** A canvas of `w` x `h` px drawn by `draw`, as an sRGB texture repeating both ways. */
 function canvasTexture(w: number, h: number, draw: (g: CanvasRenderingContext2D) => void): CanvasTexture {
   const c = document.createElement('canvas');
@@ -57,7 +46,7 @@ function canvasTexture(w: number, h: number, draw: (g: CanvasRenderingContext2D)
 /** Floor boards, 2 m square in 512 px: ten rows of planks 0.2 m wide, staggered, each its own shade of oak with a grain. */
 function planksTexture(): CanvasTexture {
   return canvasTexture(512, 512, (g) => {
-    const rnd = random(7);
+    const rnd = seededRandom(7);
     const row = 512 / 10;
     for (let r = 0; r < 10; r++) {
       let x = -rnd() * 200;
@@ -92,7 +81,7 @@ function planksTexture(): CanvasTexture {
 /** Stone blocks, 1 m square in 256 px: four courses 0.25 m high of blocks 0.5 m long, every other course offset, pale mortar. */
 function blocksTexture(): CanvasTexture {
   return canvasTexture(256, 256, (g) => {
-    const rnd = random(11);
+    const rnd = seededRandom(11);
     g.fillStyle = '#8d8577';
     g.fillRect(0, 0, 256, 256);
     for (let r = 0; r < 4; r++)
@@ -114,7 +103,7 @@ function blocksTexture(): CanvasTexture {
 /** Paving, 2 m square in 256 px: four slabs a side, grey-blue, each its own shade, with dark joints. */
 function pavingTexture(): CanvasTexture {
   return canvasTexture(256, 256, (g) => {
-    const rnd = random(5);
+    const rnd = seededRandom(5);
     g.fillStyle = '#1d222c';
     g.fillRect(0, 0, 256, 256);
     for (let i = 0; i < 4; i++)
@@ -131,7 +120,7 @@ function pavingTexture(): CanvasTexture {
  */
 function skylineTexture(): CanvasTexture {
   const t = canvasTexture(1024, 256, (g) => {
-    const rnd = random(3);
+    const rnd = seededRandom(3);
     for (const [base, tall, shade] of [
       [256, 150, '#2a2544'],
       [256, 90, '#1c1a30'],

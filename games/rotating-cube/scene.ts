@@ -16,6 +16,7 @@
  *   momentum keeps its direction (the Dzhanibekov or tennis-racket effect; Ashbaugh, Chicone and Cushman,
  *   "The twisting tennis racket", J. Dyn. Diff. Eq. 3, 1991).
  */
+import { seededRandom } from '@bitphysics/game-kit';
 import {
   addBody,
   addPlane,
@@ -492,15 +493,7 @@ export const CLASSIC_LAYOUT: PadLayout = Object.freeze({
 export function padLayout(seed: number): PadLayout {
   if (!Number.isFinite(seed)) throw new RangeError(`padLayout: seed must be a finite number, got ${seed}`);
   const s = Math.floor(seed);
-  // mulberry32: a small, well-mixed 32-bit generator (Tommy Ettinger's), enough for a layout.
-  let a = s >>> 0;
-  const random = (): number => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
+  const random = seededRandom(s);
   const pads: [number, number][] = [];
   for (let k = 0; k < PAD_COUNT; k++) {
     for (let tries = 0; ; tries++) {

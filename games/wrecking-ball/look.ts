@@ -3,6 +3,7 @@
  * canvases (a brick, a plank's grain, a painted crate, packed dirt) and box geometries that carry
  * them on each piece the right way round. Lengths are in metres.
  */
+import { seededRandom } from '@bitphysics/game-kit';
 import {
   BoxGeometry,
   type BufferGeometry,
@@ -23,15 +24,6 @@ import {
   SRGBColorSpace,
   Vector3,
 } from 'three';
-
-/** A seeded generator (a fixed sequence, so the textures look the same on every load): numbers in [0, 1). */
-function random(seed: number): () => number {
-  let a = seed >>> 0;
-  return () => {
-    a = (a * 1664525 + 1013904223) >>> 0;
-    return a / 2 ** 32;
-  };
-}
 
 /** A canvas of w x h px and its 2D context. */
 function canvas(w: number, h: number): [HTMLCanvasElement, CanvasRenderingContext2D] {
@@ -62,7 +54,7 @@ function texture(c: HTMLCanvasElement): CanvasTexture {
 /** One brick's face: fired clay, uneven in tone, with a pale mortar edge. */
 export function brickTexture(): CanvasTexture {
   const [c, g] = canvas(128, 64);
-  const rand = random(7);
+  const rand = seededRandom(7);
   g.fillStyle = '#d9d2c5';
   g.fillRect(0, 0, 128, 64);
   const grad = g.createLinearGradient(0, 0, 128, 64);
@@ -80,7 +72,7 @@ export function brickTexture(): CanvasTexture {
 /** A plank's face: wood with its grain running along (u) and a knot or two. */
 export function plankTexture(): CanvasTexture {
   const [c, g] = canvas(256, 48);
-  const rand = random(11);
+  const rand = seededRandom(11);
   g.fillStyle = '#d7a867';
   g.fillRect(0, 0, 256, 48);
   for (let i = 0; i < 14; i++) {
@@ -110,7 +102,7 @@ export function plankTexture(): CanvasTexture {
 /** A crate's face, painted red: slats, a darker frame and a diagonal brace. */
 export function crateTexture(): CanvasTexture {
   const [c, g] = canvas(128, 128);
-  const rand = random(5);
+  const rand = seededRandom(5);
   g.fillStyle = '#d9583f';
   g.fillRect(0, 0, 128, 128);
   g.strokeStyle = 'rgba(90, 20, 16, 0.55)';
@@ -135,7 +127,7 @@ export function crateTexture(): CanvasTexture {
 /** Packed dirt of a building site: brown, blotched, with gravel; repeats `repeat` times across. */
 export function dirtTexture(repeat: number): CanvasTexture {
   const [c, g] = canvas(256, 256);
-  const rand = random(3);
+  const rand = seededRandom(3);
   g.fillStyle = '#8b7556';
   g.fillRect(0, 0, 256, 256);
   for (let i = 0; i < 60; i++) {
@@ -234,7 +226,7 @@ export function bodyHalfExtents(
  */
 export function skylineTexture(): CanvasTexture {
   const [c, g] = canvas(1024, 128);
-  const rand = random(17);
+  const rand = seededRandom(17);
   const row = (color: string, minH: number, maxH: number, minW: number, maxW: number, windows: string | null): void => {
     for (let x = -10; x < 1024; ) {
       const w = minW + rand() * (maxW - minW),

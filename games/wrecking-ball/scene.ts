@@ -15,6 +15,7 @@
  * (`clearShare`) of those that stood above the ground (`clearTarget`), in at most its swings
  * (`swingBudget`).
  */
+import { seededRandom } from '@bitphysics/game-kit';
 import {
   addBallJoint3D,
   addBody,
@@ -287,18 +288,6 @@ export function openingAngle(angles: readonly number[]): number {
 /** World options: 3D, Earth gravity, room for the chain and up to a few hundred pieces; 4 substeps for the chain. */
 export function wreckingBallWorldOptions(substeps = 4): PhysicsWorldOptions {
   return { dimensions: 3, capacity: 1200, gravity: [0, -9.81, 0], substeps };
-}
-
-/** A small seeded generator (mulberry32): numbers in [0, 1). */
-export function seededRandom(seed: number): () => number {
-  let a = seed >>> 0 || 0x9e3779b9;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
 }
 
 /** The hook's position for a crane state, m. */

@@ -37,6 +37,7 @@ export { createPanel } from './panel.js';
 export type { NumberParamOptions } from './params.js';
 export { choiceParam, flagParam, numberParam, seedParam } from './params.js';
 export { pointerOnCanvas } from './pointer.js';
+export { seededRandom } from './random.js';
 export { segmentsCross } from './segments.js';
 export type { GameShell, GameShellOptions } from './shell.js';
 export { createGameShell, SHELL_CONTROLS } from './shell.js';
