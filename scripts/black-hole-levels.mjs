@@ -8,7 +8,7 @@
 //   gap while under it,) up, left, right, down and none whose predicted path for `look` s stays clear
 //   of the horizons and in the field (games/black-hole/rules.ts predictPath, the path the page
 //   draws), for at most 60 s of game time with unlimited lives. The sharp one reacts every 0.1 s and
-//   looks 1.5 s ahead; the stranger every 0.25 s and 1 s ahead. Per level: seeds cleared, mean and
+//   looks 1.5 s ahead; while a ring is left (levels.ts `LevelSpec.rings`) each first tries the thrust towards it; the stranger every 0.25 s and 1 s ahead. Per level: seeds cleared, mean and
 //   longest time to the line, falls a level (the difficulty curve). The tapper is a newcomer on a
 //   phone: it chooses the same way every 0.4 s looking 1 s ahead, but only taps (thrusts for 0.15 s,
 //   then lets go until its next choice);
@@ -38,7 +38,10 @@ const m = await importSource(
 );
 // The way a player picks by eye (test/games/black-hole-players.ts planRoute, which the scripted
 // players of the difficulty-curve test fly too).
-const { planRoute: route } = await importSource('black-hole-route', "export { planRoute } from './test/games/black-hole-players.ts';");
+const { planLeg, RING_EASE } = await importSource(
+  'black-hole-route',
+  "export { planLeg, RING_EASE } from './test/games/black-hole-players.ts';",
+);
 const [lo, hi] = arg('--levels', '1-10').split('-').map(Number);
 const seeds = Number(arg('--seeds', '8'));
 const fields = arg('--fields', '32x24,20x30')
@@ -86,6 +89,20 @@ function held(level, seed, width, height, thrust) {
   return false;
 }
 
+/** The thrust that best points 2 x the distance to `at` less 2.5 x the velocity; null when that is under 1.5 m/s^2. */
+function towards(at, x, y, vx, vy) {
+  const ax = 2 * (at[0] - x) - 2.5 * vx,
+    ay = 2 * (at[1] - y) - 2.5 * vy;
+  if (Math.hypot(ax, ay) <= 1.5) return null;
+  let best = null,
+    dot = -Infinity;
+  for (const t of ['up', 'down', 'left', 'right', 'up-left', 'up-right', 'down-left', 'down-right']) {
+    const d = m.THRUST_DIRECTION[t][0] * ax + m.THRUST_DIRECTION[t][1] * ay;
+    if (d > dot) [dot, best] = [d, t];
+  }
+  return best;
+}
+
 /**
  * Plays level `level` of seed `seed` with a pilot that chooses every `react` s looking `look` s ahead
  * (see the file's comment). Lives never run out (a fall counts and the ship starts again).
@@ -112,7 +129,9 @@ function play(level, seed, width, height, react, look, tap = Infinity, lag = 0) 
       let want = 'none';
       let first = 'up';
       const s = m.slotOf(g.ship);
-      if (gap && P.y[s] < gap.y) {
+      const ring = run.rings[run.ringsTaken];
+      if (ring) first = towards(ring, P.x[s], P.y[s], V.x[s], V.y[s]) ?? first;
+      else if (gap && P.y[s] < gap.y) {
         const ax = 2 * (gap.x - P.x[s]) - 2.5 * V.x[s];
         if (Math.abs(ax) > 1.5) first = ax > 0 ? 'right' : 'left';
       }
@@ -167,13 +186,14 @@ function flyRoute(level, seed, width, height, { react, lag, keep, speed }) {
   const margin = (r) => keep * r + m.SHIP_RADIUS + 0.5;
   const P = g.world.components.Position,
     V = g.world.components.Velocity;
-  let way = route(g, margin);
+  let way = planLeg(g, run, margin),
+    leg = run.ringsTaken;
   const queue = new Map();
   let chosen = 'none';
   const thrusts = ['none', 'up', 'down', 'left', 'right', 'up-left', 'up-right', 'down-left', 'down-right'];
   for (let k = 0; k < Math.round(60 / dt); k++) {
     if (k % every === 0 && m.canThrust(g, run)) {
-      if (run.spec.drift > 0) way = route(g, margin);
+      if (run.spec.drift > 0 || leg !== run.ringsTaken) [way, leg] = [planLeg(g, run, margin), run.ringsTaken];
       // Where the ship will be when the choice acts, as a player allows for the engine still pushing.
       const s = m.slotOf(g.ship),
         vx = V.x[s] + g.thrustVec[0] * lag,
@@ -187,10 +207,13 @@ function flyRoute(level, seed, width, height, { react, lag, keep, speed }) {
       let aim = near;
       for (let along = 0; aim + 1 < way.length && along < 3; aim++)
         along += Math.hypot(way[aim + 1][0] - way[aim][0], way[aim + 1][1] - way[aim][1]);
-      const [ax, ay] = way.length ? way[aim] : [x, g.lineY];
+      const [ax, ay] = way.length ? way[aim] : (run.rings[run.ringsTaken] ?? [x, g.lineY]);
       const d = Math.hypot(ax - x, ay - y) || 1;
-      const ex = (speed * (ax - x)) / d - vx,
-        ey = (speed * (ay - y)) / d - vy;
+      // Nearing a ring it eases off, as the test's players do (RING_EASE).
+      const ring = run.rings[run.ringsTaken];
+      const v = ring ? Math.min(speed, RING_EASE[0] + RING_EASE[1] * Math.hypot(ring[0] - x, ring[1] - y)) : speed;
+      const ex = (v * (ax - x)) / d - vx,
+        ey = (v * (ay - y)) / d - vy;
       let want = 'none';
       if (Math.hypot(ex, ey) > 0.6) {
         let best = -Infinity;
@@ -213,6 +236,7 @@ function flyRoute(level, seed, width, height, { react, lag, keep, speed }) {
     if (e === 'fell' || e === 'lost') {
       queue.clear();
       chosen = 'none';
+      [way, leg] = [planLeg(g, run, margin), run.ringsTaken];
     }
     if (g.lives < 3) g.lives = 9;
   }

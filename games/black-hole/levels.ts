@@ -25,6 +25,11 @@
  * field is emptied and the run waits (no steps) until `beginLevel` lays out the next level's holes, so
  * nothing appears on the field while the ship waits.
  *
+ * Every level has a gold ring (`LevelSpec.rings`, `layRings`) off the straight path up, at a place
+ * drawn anew for each layout: the line counts only once the ship has flown through it (crossed
+ * before, the ship flies on past the line and is lost, no life taken), so a memorised or blind input
+ * does not clear a level; a player who watches steers through it.
+ *
  * No level can be cleared without steering: a layout in which an arrow, or two arrows at right angles,
  * held from the start would reach the line, or (from level 3) a hold of ↑ of 0.5 to 3 s let go would
  * (`heldThrustClears`), is drawn again, up to LAYOUT_TRIES times.
@@ -36,7 +41,7 @@
  * Drifting holes move sideways at a constant speed and turn back at the field's edges; they are moved
  * between steps (kinematic), so their pull follows them.
  */
-import { addBody, type PhysicsWorld, removeBody, setAttractor, setPosition, setVelocity, slotOf } from '@bitphysics/physics';
+import { addBody, type PhysicsWorld, Rng, removeBody, setAttractor, setPosition, setVelocity, slotOf } from '@bitphysics/physics';
 import {
   type BlackHoleEvent,
   type BlackHoleGame,
@@ -122,6 +127,52 @@ export interface LevelSpec {
    * learns to steer by the predicted path before the lives count.
    */
   readonly practice: boolean;
+  /**
+   * Rings the ship must fly through, in order, before the line counts (integer >= 0; `layRings` puts
+   * them off the straight path up, to alternate sides, at a place drawn anew for each layout): a
+   * memorised or blind input misses them, a player who watches the screen steers through them.
+   */
+  readonly rings: number;
+}
+
+/**
+ * A ring's radius, m: the ship takes a ring when its centre comes within this of the ring's centre
+ * (the ring is drawn at this radius, so the ship is seen to pass inside it).
+ */
+export const RING_RADIUS = 1.2;
+
+/**
+ * The most the holes may pull at a ring's centre, as a share of the thrust (`layRings`): a quarter, so
+ * a ship slowing to pass through a ring is not drawn into a hole meanwhile.
+ */
+export const RING_PULL = 0.25;
+
+/** The nearest a ring's centre lies to the side of the start's x, m (`layRings`): off the straight path up. */
+export const RING_NEAR = 5;
+
+/**
+ * The most the holes may pull on the straight way to a ring (from the start, or from the ring before),
+ * as a share of the thrust (`layRings`): the way there passes no hole closely.
+ */
+export const RING_WAY_PULL = 0.4;
+
+/**
+ * How near a drifting hole is counted to pass a point at its own height, m (`layRings`): its pull
+ * there is taken at this distance plus the height between (a ship waits for it to pass by).
+ */
+const DRIFT_PASS = 2;
+
+/** The farthest a ring's centre lies to the side of the start's x, m (`layRings`). */
+export const RING_OFFSET = 7;
+
+/**
+ * The rings of level `level` (integer >= 1; see `LevelSpec.rings`): one on levels 1 to 7 (the rule
+ * is learnt on practice), none from level 8, where the fuel runs out over the attempts: with a ring
+ * to reach as well, the steering players of the tests (test/games/black-hole-players.ts) ran out on
+ * some layouts.
+ */
+export function levelRings(level: number): number {
+  return level <= 7 ? 1 : 0;
 }
 
 /**
@@ -267,6 +318,7 @@ export function levelSpec(level: number): LevelSpec {
       wallHeight: Object.freeze(wallHeight) as readonly [number, number],
       zigzag,
       practice: level === 1,
+      rings: levelRings(level),
     });
   switch (level) {
     case 1:
@@ -333,6 +385,10 @@ export interface LevelRun {
   time: number;
   /** Fuel left, s of thrust (Infinity when unlimited). */
   fuelLeft: number;
+  /** The rings' centres, m, in the order they are to be flown through (`LevelSpec.rings`; none while waiting). */
+  readonly rings: [number, number][];
+  /** Rings flown through on the current attempt (a fall or an exit starts the count again), integer >= 0. */
+  ringsTaken: number;
   /** Sideways velocity of each hole, m/s (same order as game.holes). */
   readonly holeVx: number[];
   /** Between levels (after a clear, before `beginLevel`): steps do nothing. */
@@ -365,6 +421,8 @@ export function startLevel(game: BlackHoleGame, level: number): LevelRun {
     spec: levelSpec(level),
     time: 0,
     fuelLeft: 0,
+    rings: [],
+    ringsTaken: 0,
     holeVx: [],
     waiting: false,
     summary: null,
@@ -393,7 +451,12 @@ export const PRACTICE_NOTE = 'Practice: falling in costs no life here.';
 /** The opening line of a level: the goal and what it is worth (`levelPoints`). */
 export function levelMessage(spec: LevelSpec): string {
   const worth = levelPoints(spec.level, BONUS_SECONDS).level;
-  const parts = [`Level ${spec.level}: reach the green line for ${worth} points, more if fast.`];
+  const ring = spec.rings === 1 ? 'through the gold ring' : `through the ${spec.rings} gold rings in order`;
+  const parts = [
+    spec.rings > 0
+      ? `Level ${spec.level}: fly ${ring}, then reach the green line for ${worth} points, more if fast.`
+      : `Level ${spec.level}: reach the green line for ${worth} points, more if fast.`,
+  ];
   if (spec.gate > 0)
     parts.push(spec.blockers > 0 ? 'Find the gap in the wall, then steer round the hole above it.' : 'Find the gap in the wall.');
   if (spec.zigzag) parts.push('Weave between the holes.');
@@ -430,7 +493,96 @@ function layLevel(game: BlackHoleGame, run: LevelRun, level: number): void {
     layHoles(game, run, spec);
     if (tries >= LAYOUT_TRIES || heldThrustClears(game, run) === null) break;
   }
+  // The rings last, from a stream of their own, so the holes are laid as they would be without them.
+  layRings(game, run, spec);
   game.message = levelMessage(spec);
+}
+
+/**
+ * Lays out a level's rings (`LevelSpec.rings`) round the holes laid: ring k in the k-th of equal bands
+ * of height between 5 m and 3 m below the line (on the default field's 22 m climb, scaled to this
+ * field's), RING_NEAR to RING_OFFSET m to the side of the start's x (and 3.5 m or more from the field's edge),
+ * to alternate sides of it, the first side drawn (on a wall level the gap's side; a side where none of
+ * 40 draws fits gives way to the other). Of up to 80 draws the
+ * first where the holes pull at under RING_PULL of the thrust (their pulls' sizes summed; a drifting
+ * hole's as if passing above or below, DRIFT_PASS m to the side), the still holes at under RING_WAY_PULL of
+ * it all along the straight way there from the start (or the ring before: a drifting hole's row is
+ * crossed when it has passed), that way 1.5 m clear of a slow player's
+ * berth round each still hole (2.6 horizon radii, the ship's size and 0.5 m), and 2 m clear of the ring before is
+ * kept, else the one with the most margin. The draws
+ * come from a generator of their own (seeded from `levelSeed`), so they do not move the holes.
+ */
+function layRings(game: BlackHoleGame, run: LevelRun, spec: LevelSpec): void {
+  run.rings.length = 0;
+  run.ringsTaken = 0;
+  if (spec.rings === 0) return;
+  const rng = new Rng((levelSeed(game.params.seed, spec.level) ^ 0x2545f491) >>> 0);
+  const s = game.lineY / LINE_Y,
+    W = game.field.width,
+    x0 = game.start[0];
+  const lo = 5 * s,
+    hi = game.lineY - 3 * s,
+    band = (hi - lo) / spec.rings;
+  const far = Math.max(3.5, Math.min(RING_OFFSET, W / 2 - 3.5));
+  const P = game.world.components.Position,
+    G = gravitationalConstant(game);
+  // The holes' pull at (x, y), m/s^2, their sizes summed; a drifting hole's as it passes under or over
+  // (DRIFT_PASS m to the side); `still`: the still holes' alone.
+  const pullAt = (x: number, y: number, still = false): number => {
+    let pull = 0;
+    for (let i = 0; i < game.holes.length; i++) {
+      if (still && run.holeVx[i]) continue;
+      const h = slotOf(game.holes[i]!);
+      const dy = y - P.y[h]!,
+        d2 = run.holeVx[i] ? dy * dy + DRIFT_PASS ** 2 : (x - P.x[h]!) ** 2 + dy * dy;
+      pull += (G * game.holeMass[i]!) / Math.max(d2, 1e-6);
+    }
+    return pull;
+  };
+  let side = rng.range(0, 1) < 0.5 ? -1 : 1;
+  if (spec.gate > 0) {
+    // A wall level: the first ring on the gap's side (where the wall has fewer holes), under the wall.
+    let lean = 0;
+    for (const h of game.holes) lean += Math.sign(P.x[slotOf(h)]! - x0);
+    side = lean > 0 ? -1 : 1;
+  }
+  for (let k = 0; k < spec.rings; k++) {
+    let best: [number, number] = [x0 + side * far, lo + band * (k + 0.5)],
+      bestClear = -Infinity;
+    for (let attempt = 0; attempt < 80 && bestClear < 0; attempt++) {
+      // Half the draws on the side drawn, then (none fitting there) the other side.
+      const x = x0 + (attempt < 40 ? side : -side) * rng.range(RING_NEAR, far),
+        y = lo + band * (k + rng.range(0.15, 0.85));
+      // The pull at the ring, and the most on the straight way to it from the start (or the ring before).
+      const [fx, fy] = run.rings.at(-1) ?? game.start;
+      let onWay = 0;
+      let berth = Infinity;
+      for (let t = 0.1; t < 1.05; t += 0.1) {
+        const wx = fx + t * (x - fx),
+          wy = fy + t * (y - fy);
+        onWay = Math.max(onWay, pullAt(wx, wy, true));
+        // And a slow player's berth (2.6 horizon radii, the ship's size and 0.5 m) and 1.5 m more from each still hole.
+        for (let i = 0; i < game.holes.length; i++) {
+          if (run.holeVx[i]) continue;
+          const h = slotOf(game.holes[i]!);
+          berth = Math.min(berth, Math.hypot(wx - P.x[h]!, wy - P.y[h]!) - 2.6 * game.holeRadius[i]! - SHIP_RADIUS - 2);
+        }
+      }
+      const a = game.params.thrust;
+      let clear = Math.min(RING_PULL * a - pullAt(x, y), RING_WAY_PULL * a - onWay, berth);
+      const last = run.rings.at(-1);
+      if (last && Math.hypot(x - last[0], y - last[1]) < 2 * RING_RADIUS + 2) clear -= 1000;
+      if (clear > bestClear) [bestClear, best] = [clear, [x, y]];
+    }
+    run.rings.push(best);
+    side = best[0] < x0 ? 1 : -1;
+  }
+}
+
+/** The index of the ring that a ship at (x, y), m, takes now: the next one (`LevelRun.ringsTaken`) when within RING_RADIUS of it, else -1. */
+export function ringTaken(run: LevelRun, x: number, y: number): number {
+  const next = run.rings[run.ringsTaken];
+  return next && Math.hypot(x - next[0], y - next[1]) < RING_RADIUS ? run.ringsTaken : -1;
 }
 
 /** The first level whose layouts come from a stream of their own (`levelSeed`); levels before it keep the game's. */
@@ -607,9 +759,12 @@ export function phasedFlight(
     vx = 0,
     vy = 0;
   const steps = HELD_SECONDS / dt;
+  const rings = run.rings,
+    height = game.field.height;
   let k = 0,
     phase = 0,
-    side = 0;
+    side = 0,
+    taken = 0;
   if (held === 'none') {
     // No thrust left once the pad takes its downward part: the ship stays parked (`stepLevel`).
     for (; k < steps; k++)
@@ -662,14 +817,17 @@ export function phasedFlight(
       path[2 * k + 1] = y;
     }
     k++;
-    if (y >= lineY) return { end: 'cleared', steps: k, x, y };
+    // The line counts once every ring is taken (`LevelSpec.rings`); before that the ship flies on past it.
+    if (y >= lineY && taken >= rings.length) return { end: 'cleared', steps: k, x, y };
     for (let i = 0; i < n; i++) {
       const dx = x - hx[i]!,
         dy = y - hy[i]!,
         r = reach[i]!;
       if (dx * dx + dy * dy < r * r) return { end: 'fell', steps: k, x, y };
     }
-    if (x < 0 || x > width || y < 0) return { end: 'left', steps: k, x, y };
+    if (x < 0 || x > width || y < 0 || y > height) return { end: 'left', steps: k, x, y };
+    const ring = rings[taken];
+    if (ring && Math.hypot(x - ring[0], y - ring[1]) < RING_RADIUS) taken++;
   }
   return { end: 'timeout', steps: k, x, y };
 }
@@ -940,7 +1098,24 @@ export function stepLevel(game: BlackHoleGame, run: LevelRun): BlackHoleEvent | 
     y0 = Pos.y[ship]!,
     vx0 = Vel.x[ship]!,
     vy0 = Vel.y[ship]!;
+  // The line counts only once every ring is taken.
+  game.lineOpen = run.ringsTaken >= run.rings.length;
   let event = stepBlackHole(game);
+  game.lineOpen = true;
+  if (event === 'none' && !run.parked && ringTaken(run, Pos.x[ship]!, Pos.y[ship]!) >= 0) {
+    run.ringsTaken++;
+    const left = run.rings.length - run.ringsTaken;
+    game.message =
+      left > 0
+        ? `Ring ${run.ringsTaken} of ${run.rings.length}! Now the next ring.`
+        : `${ringWord(run.rings.length)} done! Now the green line.`;
+  }
+  if (event === 'fell' || event === 'lost') {
+    const missed = event === 'lost' && run.ringsTaken < run.rings.length && y0 >= game.lineY - 1;
+    run.ringsTaken = 0;
+    if (missed)
+      game.message = `Missed ${run.rings.length === 1 ? 'the ring' : 'a ring'}: the line counts only after every ring. Back to the start.`;
+  }
   if (run.spec.practice && (event === 'fell' || event === 'over')) {
     // A practice level gives the life back (and with it the game, had it been the last).
     game.lives++;
@@ -976,6 +1151,8 @@ export function stepLevel(game: BlackHoleGame, run: LevelRun): BlackHoleEvent | 
   // own, when the next level begins; until then the field is empty.
   clearHoles(game, run);
   clearParticles(game);
+  run.rings.length = 0;
+  run.ringsTaken = 0;
   run.spec = levelSpec(run.spec.level + 1);
   run.parked = true;
   // The ship stays where it crossed (the step's move from x0, y0; at the line at least), at rest,
@@ -992,6 +1169,11 @@ export function stepLevel(game: BlackHoleGame, run: LevelRun): BlackHoleEvent | 
 }
 
 const REST: readonly [number, number] = [0, 0];
+
+/** 'Ring' or 'All N rings', for the message when the last ring is taken. */
+function ringWord(n: number): string {
+  return n === 1 ? 'Ring' : `All ${n} rings`;
+}
 
 /**
  * The line shown when a level is cleared: its time (and falls), the points and how they were made,

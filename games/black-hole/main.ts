@@ -47,7 +47,7 @@ import {
 import { createPauseOverlay, startPixiGame } from '@bitphysics/game-kit/pixi';
 import { type PhysicsWorld, Rng, slotOf, stateHash } from '@bitphysics/physics';
 import { Container, Graphics, Sprite, Text, Texture } from 'pixi.js';
-import { canThrust, type LevelRun, levelPoints, startLevel } from './levels';
+import { canThrust, type LevelRun, levelPoints, RING_RADIUS, startLevel } from './levels';
 import { releaseStep, TAP_STEPS } from './press-timing';
 import { type BlackHoleReplay, createBlackHoleReplay, type GameStepEvent } from './replay';
 import {
@@ -63,6 +63,7 @@ import {
   type Predictor,
   pathEnd,
   predictPath,
+  type Thrust,
 } from './rules';
 import { nextHappening, pausedWords, type ShipHappening, touchStatusLines, waitWords } from './wait-words';
 
@@ -945,6 +946,8 @@ function updateStatus(force = false): void {
         [lives, replay.player !== null],
         // The holes on the field (none while the next level waits to begin).
         [run.waiting ? '' : `Holes ${bh.holes.length}`, true],
+        // The rings flown through (the line counts once all are).
+        [run.waiting || run.rings.length === 0 ? '' : `Ring ${run.ringsTaken}/${run.rings.length}`, false],
         [`Score ${bh.score}`, false],
         [`Best ${Math.max(best, bh.score)}`, true],
         // In a replay the fuel may go (then the lives) so the replay's clock fits a phone's line.
@@ -1108,6 +1111,54 @@ function drawBackdrop(): void {
   backdrop.stroke({ width: 3, color: 0x4cff7a, alpha: 0.8 });
   // Start pad.
   backdrop.rect(cam.toScreenX(W / 2 - 1.2), cam.toScreenY(0.9), cam.toScreenLength(2.4), 3).fill({ color: 0x8d99ae, alpha: 0.7 });
+}
+
+/**
+ * Whether the predicted path's first `n` points fly through every ring left, in order (true without
+ * rings).
+ */
+function ringsOnPath(n: number): boolean {
+  if (!run) return true;
+  let taken = run.ringsTaken;
+  for (let i = 0; i < n && taken < run.rings.length; i++) {
+    const [rx, ry] = run.rings[taken]!;
+    if (Math.hypot(path[2 * i]! - rx, path[2 * i + 1]! - ry) < RING_RADIUS) taken++;
+  }
+  return taken >= run.rings.length;
+}
+
+/** The rings' colours: the next one to fly through (gold), one taken (green). */
+const RING_NEXT = 0xffc845,
+  RING_DONE = 0x4cff7a;
+
+/**
+ * Draws the level's rings (./levels.ts `LevelSpec.rings`): the next one gold, pulsing, with a soft
+ * halo; later ones dimmer; taken ones thin and green. While one is left, the finish line is dimmed
+ * (it does not count yet).
+ */
+function drawRings(): void {
+  if (!run || run.waiting || run.rings.length === 0) return;
+  const cam = renderer.camera,
+    r = cam.toScreenLength(RING_RADIUS),
+    pulse = 0.5 + 0.5 * Math.sin(performance.now() / 220);
+  for (let i = 0; i < run.rings.length; i++) {
+    const [x, y] = run.rings[i]!;
+    const sx = cam.toScreenX(x),
+      sy = cam.toScreenY(y);
+    if (i < run.ringsTaken) {
+      overlay.circle(sx, sy, r).stroke({ width: 2, color: RING_DONE, alpha: 0.55 });
+      continue;
+    }
+    const next = i === run.ringsTaken;
+    overlay.circle(sx, sy, r + 4).stroke({ width: 8, color: RING_NEXT, alpha: next ? 0.12 + 0.12 * pulse : 0.08 });
+    overlay.circle(sx, sy, r).stroke({ width: 3.5, color: RING_NEXT, alpha: next ? 0.75 + 0.25 * pulse : 0.4 });
+    addDot(sx, sy);
+  }
+  if (run.ringsTaken < run.rings.length) {
+    // The line is closed: its dashes dimmed under a band of the field's colour.
+    const ly = cam.toScreenY(bh.lineY);
+    overlay.rect(cam.toScreenX(0), ly - 3, cam.toScreenLength(playField.width), 6).fill({ color: 0x070a16, alpha: 0.7 });
+  }
 }
 
 /** Disc of hot gas around each hole: outer radius (x the horizon's), tilt (minor / major axis), turns a second. */
@@ -1288,7 +1339,8 @@ function levelNews(spec: LevelRun['spec']): string {
           : 'steer between the holes'
         : `${n} ${n === 1 ? 'hole' : 'holes'}`;
   const extra = [spec.drift > 0 ? 'drifting' : '', Number.isFinite(spec.fuel) ? `${spec.fuel} s of fuel` : ''].filter(Boolean);
-  return `${holes}${extra.length ? `, ${extra.join(', ')}` : ''}\n${levelPoints(spec.level, 0).level} points at the line`;
+  const ring = spec.rings === 0 ? '' : spec.rings === 1 ? 'through the gold ring, then ' : `through the ${spec.rings} gold rings, then `;
+  return `${ring}${holes}${extra.length ? `, ${extra.join(', ')}` : ''}\n${levelPoints(spec.level, 0).level} points at the line`;
 }
 
 /** How long the level's title shows at full strength, then how long it takes to fade, ms. */
@@ -1750,15 +1802,57 @@ const coachText = new Text({
 coachText.visible = false;
 app.stage.addChild(coachText);
 
+/** The arrows the coach names for each thrust it may advise toward a ring (`ringAdvice`). */
+const THRUST_WORDS: Partial<Record<Thrust, string>> = {
+  up: '↑',
+  'up-left': '← and ↑',
+  'up-right': '→ and ↑',
+  left: '←',
+  right: '→',
+};
+
+/** A path predicted for the coach's trials of held arrows (`ringAdvice`), beside the drawn `path`. */
+const trialPath = new Float64Array(path.length);
+
+/**
+ * The arrows whose path, held from now, flies through the next ring at `ring` (m), or null when none
+ * does. Tried in an order a player can follow without the advice flipping: the arrows held now (a
+ * path through the ring is kept while it lasts), then ↑ alone (tried before a side arrow is let go),
+ * then the side towards the ring with ↑, that side alone, the other side with ↑. Never an arrow with
+ * ↓: a late reaction to ↓ overshot a ring below and the advice swung back and forth.
+ */
+function ringAdvice(ring: readonly [number, number]): string | null {
+  const [rx, ry] = ring;
+  const toward = rx < path[0]! ? 'left' : 'right',
+    away = toward === 'left' ? 'right' : 'left';
+  const tries: Thrust[] = [bh.thrust, 'up', `up-${toward}`, toward, `up-${away}`];
+  const live = bh.thrust;
+  let found: Thrust | null = null;
+  for (const t of tries) {
+    if (!(t in THRUST_WORDS)) continue;
+    bh.thrust = t;
+    const n = predictPath(bh, predictor, trialPath, PATH_STEPS, run?.holeVx);
+    for (let i = 0; i < n && !found; i++) if (Math.hypot(trialPath[2 * i]! - rx, trialPath[2 * i + 1]! - ry) < RING_RADIUS) found = t;
+    if (found) break;
+  }
+  bh.thrust = live;
+  return found ? THRUST_WORDS[found]! : null;
+}
+
 /**
  * The coach's words for the path drawn this frame (the ship at x, m): how it ends, and the arrows to
- * hold. Red on a hole: the side arrow away from that hole, with ↑ (steer round it); red off a side:
- * the side arrow back, with ↑; otherwise ↑ (climb). From the pad: ↑ (the path shows where it goes).
+ * hold. Red on a hole: the side arrow away from that hole, with ↑ (steer round it); a ring left
+ * (../levels.ts `LevelSpec.rings`) that the path misses: the arrows towards it; red off a side: the
+ * side arrow back, with ↑; otherwise ↑ (climb). From the pad: ↑ (the path shows where it goes).
  */
 function coachLine(x: number): string {
   if (padPath) return 'Hold ↑ to fly.\nThe dots show your way.';
   const lx = path[2 * pathPoints - 2]!,
     ly = path[2 * pathPoints - 1]!;
+  // A ring left: the arrows that fly through it (`ringAdvice`), before all else: its path does not fall first.
+  const ring = run && run.ringsTaken < run.rings.length ? run.rings[run.ringsTaken]! : null;
+  const advice = ring ? ringAdvice(ring) : null;
+  if (advice) return `Gold ring first!\nHold ${advice} to fly through it.`;
   if (pathKind === 'falls') {
     // The hole that takes the path: the one whose horizon its end is nearest.
     const P = bh.world.components.Position;
@@ -1770,6 +1864,11 @@ function coachLine(x: number): string {
       if (d < best) [best, hx] = [d, P.x[h]!];
     }
     return `Red: you'd fall in!\nHold ${x < hx ? '←' : '→'} and ↑ to steer round.`;
+  }
+  // A ring no arrows reach now: the side towards it with ↑ (never ↓, see `ringAdvice`).
+  if (ring) {
+    const side = ring[0] < x - 0.8 ? '←' : ring[0] > x + 0.8 ? '→' : '';
+    return `Gold ring first!\nHold ${side ? `${side} and ` : ''}↑ to fly through it.`;
   }
   if (pathKind === 'lost')
     return lx < 0 || lx > bh.field.width
@@ -2035,6 +2134,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   drawHoles(world);
   const cam = renderer.camera;
   overlay.clear();
+  drawRings();
   const s = bh.ship,
     P = world.components.Position,
     O = world.components.PreviousPosition;
@@ -2072,9 +2172,14 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     // with a cross where it leaves; one that reaches the line blue; one that runs on mid-field grey.
     const lx = path[2 * pathPoints - 2]!,
       ly = path[2 * pathPoints - 1]!;
+    // The line counts for the path only if it flies through the rings left first (../levels.ts
+    // `LevelSpec.rings`): else it is drawn flying on past the line and out, red.
+    const lineOpen = ringsOnPath(pathPoints);
+    bh.lineOpen = lineOpen;
     pathKind = pathEnd(bh, path, pathPoints, steps);
+    bh.lineOpen = true;
     pathReachesLine = false;
-    for (let i = 0; i < pathPoints && !pathReachesLine; i++) pathReachesLine = path[2 * i + 1]! >= bh.lineY;
+    for (let i = 0; i < pathPoints && !pathReachesLine && lineOpen; i++) pathReachesLine = path[2 * i + 1]! >= bh.lineY;
     const warn = pathKind !== 'clear';
     const color = warn ? PATH_WARN : pathReachesLine ? PATH_CLEAR : PATH_OPEN;
     // Dots fade along the path but stay plain to the end (faded to nothing, a path seemed to stop short).

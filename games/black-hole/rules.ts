@@ -353,6 +353,11 @@ export interface BlackHoleGame {
   readonly start: readonly [number, number];
   /** The finish line: crossing y = lineY (m, 2 m below the top) scores. */
   readonly lineY: number;
+  /**
+   * Whether crossing the line scores now (default true). A level closes it while rings are left to fly
+   * through (./levels.ts `LevelSpec.rings`): the ship then flies on past the line and leaves the field.
+   */
+  lineOpen: boolean;
 }
 
 function check(cond: boolean, message: string): void {
@@ -597,6 +602,7 @@ export function createBlackHoleGame(options: BlackHoleOptions = {}): BlackHoleGa
     field: p.field,
     start,
     lineY: p.field.height - 2,
+    lineOpen: true,
   };
   addSystem(world, 'forces', thrustLaw(game, ship, game));
   layoutHoles(game, p.holes);
@@ -769,7 +775,8 @@ export function holeHit(game: BlackHoleGame, ax: number, ay: number, bx: number,
 
 /**
  * One step of the game: the physics step (thrust, the holes' pull, exhaust), then the rules in this
- * order: fell into a hole (a life lost; at zero the game is over), crossed the line (score += holes,
+ * order: fell into a hole (a life lost; at zero the game is over), crossed the line while it is open
+ * (`BlackHoleGame.lineOpen`; score += holes,
  * one more hole, new layout), left the field (back to the start, no penalty). Exhaust particles that
  * cross a horizon are removed. Once the game is over the ship waits at the start; so does a parked one
  * (`params.park`, `BlackHoleGame.parked`), which drops the thrust's downward part.
@@ -826,7 +833,7 @@ export function stepBlackHole(game: BlackHoleGame): BlackHoleEvent {
     game.message = `Swallowed by a black hole! ${game.lives} ${game.lives === 1 ? 'life' : 'lives'} left.`;
     return 'fell';
   }
-  if (y >= game.lineY) {
+  if (game.lineOpen && y >= game.lineY) {
     const n = game.holes.length;
     game.score += n;
     game.crossings++;
@@ -1085,14 +1092,14 @@ export type PathEnd = 'clear' | 'falls' | 'lost';
  * How the predicted path of `n` points in `out` (x0, y0, x1, y1, ... m, as `predictPath` writes them,
  * asked for `steps` steps) ends: 'falls' when it stops short inside the field (on a horizon);
  * 'lost' when it leaves the field (x < 0, x > width or y < 0, or above the field) before reaching
- * the finish line, where the game would put the ship back at the start ("Lost in space");
+ * the finish line (or at all while the line is closed: `BlackHoleGame.lineOpen`), where the game would put the ship back at the start ("Lost in space");
  * 'clear' otherwise (it runs its full length, or reaches the line first).
  * @throws RangeError unless n is an integer in [1, out.length / 2] and steps an integer >= 1.
  */
 export function pathEnd(game: BlackHoleGame, out: Float64Array, n: number, steps: number): PathEnd {
   check(Number.isInteger(n) && n >= 1 && 2 * n <= out.length, `pathEnd: n must be an integer in [1, ${out.length >> 1}], got ${n}`);
   check(Number.isInteger(steps) && steps >= 1, `pathEnd: steps must be an integer >= 1, got ${steps}`);
-  for (let i = 0; i < n; i++) if (out[2 * i + 1]! >= game.lineY) return 'clear';
+  if (game.lineOpen) for (let i = 0; i < n; i++) if (out[2 * i + 1]! >= game.lineY) return 'clear';
   const x = out[2 * n - 2]!,
     y = out[2 * n - 1]!;
   const outside = x < 0 || x > game.field.width || y < 0 || y > game.field.height;

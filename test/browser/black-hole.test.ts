@@ -61,11 +61,11 @@ describe('black hole', () => {
   it('labels the score; a fall spirals the ship in; the next thrust clears the message; the edge warns', async () => {
     expect(await g.page.locator('[data-hud="numbers"]').textContent()).toContain('Score 0');
     expect(await g.page.locator('[data-hud="message"]').textContent()).toBe(
-      'Level 1: reach the green line for 100 points, more if fast. Practice: falling in costs no life here.',
+      'Level 1: fly through the gold ring, then reach the green line for 100 points, more if fast. Practice: falling in costs no life here.',
     );
     // The level's title shows over the field until the first thrust, with what the line is worth.
     expect(await g.page.evaluate(() => (window.game as unknown as BlackHolePage).levelBanner())).toBe(
-      'Level 1\nsteer round the hole\n100 points at the line',
+      'Level 1\nthrough the gold ring, then steer round the hole\n100 points at the line',
     );
     // The predicted path shows from the pad before the first thrust (the path holding ↑ would take;
     // it showed only once the ship moved), and the legend says what its colours mean.
@@ -227,7 +227,7 @@ describe('black hole, the replay clock and the paused path words', () => {
       pauseOverlay(): { visible: boolean; words: boolean };
       renderer: { camera: { toScreenY(y: number): number } };
       bh: { ship: number; lineY: number; world: { components: Record<string, { x: Float64Array; y: Float64Array }> } };
-      level: { parked: boolean };
+      level: { parked: boolean; ringsTaken: number; rings: unknown[] };
     };
     // The ship 6 m under the line, flying up at 4 m/s, right of the middle: its path reaches the line
     // in the band where "Paused" stands (the words by its end were drawn over it).
@@ -241,6 +241,8 @@ describe('black hole, the replay clock and the paused path words', () => {
       c.Velocity!.x[s] = 0;
       c.Velocity!.y[s] = 4;
       w.level.parked = false;
+      // The ring taken: the line counts, so the path reaches it.
+      w.level.ringsTaken = w.level.rings.length;
       w.paused = true;
     });
     const boxes = await g.waitFor(() => {
@@ -374,6 +376,7 @@ describe('black hole, between levels', () => {
       c.Position!.y[s] = c.PreviousPosition!.y[s] = c.Position!.y[hole]!;
       (w.level as unknown as { parked: boolean }).parked = false;
       for (let i = 0; i < 600 && (w.bh as unknown as { falls: number }).falls === 0; i++) w.step();
+      (w.level as unknown as { ringsTaken: number }).ringsTaken = 1;
       w.bh.world.components.Position.y[w.bh.ship % 2 ** 25] = w.bh.lineY + 0.3;
       w.step();
       const during = { waiting: w.level.waiting, next: w.level.spec.level, holes: w.bh.holes.length, y: w.ship()[1]! };
@@ -515,6 +518,7 @@ describe('black hole, between levels', () => {
       const w = window.game as unknown as Bh;
       w.reset();
       w.paused = true;
+      (w.level as unknown as { ringsTaken: number }).ringsTaken = 1;
       w.bh.world.components.Position.y[w.bh.ship % 2 ** 25] = w.bh.lineY + 0.3;
       w.step();
       (window as unknown as { keptMayDraw: () => boolean }).keptMayDraw = w.pacer.mayDraw;
@@ -724,7 +728,12 @@ describe.each([
     // A cleared level: the "Level 2" button shows over the field, clear of the start pad (drawn 2.4 m
     // wide at 0.9 m up), of the ship waiting on it (shipPx tall) and of the thrust buttons.
     await p.page.evaluate(() => {
-      const w = window.game as unknown as { bh: { ship: number; lineY: number; world: { components: { Position: { y: Float64Array } } } } };
+      const w = window.game as unknown as {
+        bh: { ship: number; lineY: number; world: { components: { Position: { y: Float64Array } } } };
+        level: { ringsTaken: number; rings: unknown[] };
+      };
+      // The ring counted as flown through (the line counts only after it), then the ship over the line.
+      w.level.ringsTaken = w.level.rings.length;
       w.bh.world.components.Position.y[w.bh.ship % 2 ** 25] = w.bh.lineY + 0.3;
     });
     const next = p.page.getByRole('button', { name: 'Level 2 ▶' });
@@ -1096,7 +1105,7 @@ describe('black hole, a phone played with keys', () => {
     const p = await h.openGame('black-hole', { viewport: { width: 390, height: 844 }, touch: true, query: { level: 1 } });
     type Bh = {
       bh: { ship: number; lineY: number; world: { components: Record<string, { y: Float64Array; x: Float64Array }> } };
-      level: { parked: boolean; waiting: boolean };
+      level: { parked: boolean; waiting: boolean; ringsTaken: number; rings: unknown[] };
     };
     const shown = await p.waitFor(() => {
       const card = document.querySelector('[data-hud="touch-hint"]');
@@ -1109,6 +1118,8 @@ describe('black hole, a phone played with keys', () => {
       const c = w.bh.world.components,
         s = w.bh.ship % 2 ** 25;
       w.level.parked = false;
+      // The ring counted as flown through: the line counts only after it.
+      w.level.ringsTaken = w.level.rings.length;
       c.Position!.y[s] = c.PreviousPosition!.y[s] = w.bh.lineY - 0.3;
       c.Velocity!.x[s] = 0;
       c.Velocity!.y[s] = 4;
@@ -1144,6 +1155,11 @@ describe('black hole on a phone (390 x 844, touch)', () => {
     const cdp = await p.page.context().newCDPSession(p.page);
     const finger = (type: 'touchStart' | 'touchMove', [x, y]: [number, number]) =>
       cdp.send('Input.dispatchTouchEvent', { type, touchPoints: [{ x, y, id: 1 }] });
+    // The ring counted as flown through, so the line ends the flight (this checks the side wall).
+    await p.page.evaluate(() => {
+      const run = (window.game as unknown as { level: { ringsTaken: number; rings: unknown[] } }).level;
+      run.ringsTaken = run.rings.length;
+    });
     await finger('touchStart', seam);
     await p.waitFor(() => (window.game as unknown as PhoneBh).bh.thrust === 'up-left', null);
     // The least x the ship reaches, m, sampled every frame from here on; the game paused in the first
@@ -1330,6 +1346,7 @@ describe('black hole, a stranger on a phone (issue 34)', () => {
       const c = w.bh.world.components,
         s = (w as unknown as { bh: { ship: number } }).bh.ship % 2 ** 25;
       w.level!.parked = false;
+      (w.level as unknown as { ringsTaken: number }).ringsTaken = 1;
       c.Position!.y[s] = c.PreviousPosition!.y[s] = w.bh.lineY - 0.05;
       c.Velocity!.y[s] = 3;
     });
@@ -1460,11 +1477,11 @@ describe('black hole, the replay of a level (issue 34)', () => {
       advance(): void;
       ghostExtents(): number[][];
       bh: { ship: number; lineY: number; holes: number[]; world: { components: Record<string, { x: Float64Array; y: Float64Array }> } };
-      level: { waiting: boolean; parked: boolean; spec: { level: number } };
+      level: { waiting: boolean; parked: boolean; spec: { level: number }; ringsTaken: number; rings: unknown[] };
       replay: { player: unknown };
     };
     const p = await h.openGame('black-hole', { viewport: { width: 1280, height: 800 }, query: { level: 1 } });
-    /** Flies ↑ for 20 steps (recorded input), then puts the ship over the line: the next steps clear the level. */
+    /** Flies ↑ for 20 steps (recorded input), then counts the ring taken and puts the ship over the line: the next steps clear the level. */
     const clear = () =>
       p.page.evaluate(() => {
         const w = window.game as unknown as Rp;
@@ -1473,6 +1490,7 @@ describe('black hole, the replay of a level (issue 34)', () => {
         window.dispatchEvent(new KeyboardEvent('keydown', { key: 'ArrowUp' }));
         for (let i = 0; i < 20; i++) w.step();
         window.dispatchEvent(new KeyboardEvent('keyup', { key: 'ArrowUp' }));
+        w.level.ringsTaken = w.level.rings.length;
         w.bh.world.components.Position!.y[w.bh.ship % 2 ** 25] = w.bh.lineY + 0.3;
         for (let i = 0; i < 40 && !w.level.waiting; i++) w.step();
         return { waiting: w.level.waiting, next: w.level.spec.level, levelHoles };

@@ -883,7 +883,9 @@ describe('black hole levels', () => {
     });
     expect(controls.level).toBe('1');
     expect('holes' in controls).toBe(false);
-    expect(await g.page.locator('[data-hud="numbers"]').textContent()).toMatch(/Level 1\s+Lives ♥♥♥\s+Holes 1\s+Score 0\s+Best \d+/);
+    expect(await g.page.locator('[data-hud="numbers"]').textContent()).toMatch(
+      /Level 1\s+Lives ♥♥♥\s+Holes 1\s+Ring 0\/1\s+Score 0\s+Best \d+/,
+    );
     // The hole is drawn (its horizon is black with a glow: many colours in the canvas).
     expect(await g.canvasColors()).toBeGreaterThan(16);
     expect(g.errors).toEqual([]);

@@ -37,6 +37,7 @@ import {
   predictPath,
   START,
   setThrust,
+  THRUST_DIRECTION,
   type Thrust,
 } from '../../games/black-hole/rules';
 
@@ -107,10 +108,29 @@ function wallGap(g: BlackHoleGame): { x: number; y: number; width: number; other
 }
 
 /**
+ * The arrow or pair (of the eight) that best points a push on the distance to `at` (m) braked on the
+ * velocity (2 x distance - 2.5 x velocity, m/s^2) from a ship at x, y moving at vx, vy; null when that
+ * push is under 1.5 m/s^2 (near enough, slow enough).
+ */
+function towards(at: readonly [number, number], x: number, y: number, vx: number, vy: number): Thrust | null {
+  const ax = 2 * (at[0] - x) - 2.5 * vx,
+    ay = 2 * (at[1] - y) - 2.5 * vy;
+  if (Math.hypot(ax, ay) <= 1.5) return null;
+  let best: Thrust | null = null,
+    dot = -Infinity;
+  for (const t of ['up', 'down', 'left', 'right', 'up-left', 'up-right', 'down-left', 'down-right'] as const) {
+    const d = THRUST_DIRECTION[t][0] * ax + THRUST_DIRECTION[t][1] * ay;
+    if (d > dot) [dot, best] = [d, t];
+  }
+  return best;
+}
+
+/**
  * A simple pilot: every 0.1 s it tries thrust up, left, right, down and none in that order and keeps
  * the first whose predicted path (1.5 s, ./rules `predictPath`) neither enters a horizon nor leaves
- * the field by a side or the bottom. On a wall level it first tries, while under the wall, the
- * sideways thrust that takes it to the gap (`wallGap`: it has eyes, as a player does). Plays at most
+ * the field by a side or the bottom. While a ring is left it first tries the thrust that takes it to
+ * the next ring (`towards`); then, on a wall level, while under the wall, the sideways thrust that
+ * takes it to the gap (`wallGap`: it has eyes, as a player does). Plays at most
  * `seconds`; stops at a clear or game over.
  */
 function pilot(g: BlackHoleGame, run: LevelRun, seconds: number) {
@@ -126,7 +146,9 @@ function pilot(g: BlackHoleGame, run: LevelRun, seconds: number) {
       want = 'none';
       let first: Thrust = 'up';
       const s = slotOf(g.ship);
-      if (gap && P.y[s]! < gap.y) {
+      const ring = run.rings[run.ringsTaken];
+      if (ring) first = towards(ring, P.x[s]!, P.y[s]!, V.x[s]!, V.y[s]!) ?? first;
+      else if (gap && P.y[s]! < gap.y) {
         // Towards the gap: a sideways push on the distance, braked on the sideways speed.
         const ax = 2 * (gap.x - P.x[s]!) - 2.5 * V.x[s]!;
         if (Math.abs(ax) > 1.5) first = ax > 0 ? 'right' : 'left';
@@ -237,6 +259,10 @@ describe('levels', () => {
       P.y[slotOf(h)] = 12;
     }
     g.version++;
+    // The ring is off the straight path up: held up misses it, so the line does not count.
+    expect(heldThrustClears(g, run)).toBe(null);
+    // Put on the straight path, it is flown through and the line counts.
+    run.rings[0] = [g.start[0], 10];
     expect(heldThrustClears(g, run)).toBe('up');
   }, 120_000);
 
@@ -265,7 +291,8 @@ describe('levels', () => {
         const g = createBlackHoleGame({ seed, field, lives: 9 });
         const run = startLevel(g, 1);
         for (const level of [2, 3, 4]) {
-          // Clear the level in play: the ship put just under the line, moving up.
+          // Clear the level in play: the rings taken, the ship put just under the line, moving up.
+          run.ringsTaken = run.rings.length;
           g.world.components.Position.x[slotOf(g.ship)] = g.start[0];
           g.world.components.Position.y[slotOf(g.ship)] = g.lineY - 0.01;
           g.world.components.Velocity.y[slotOf(g.ship)] = 2;
@@ -448,6 +475,8 @@ describe('levels', () => {
       P.x[slotOf(h)] = 3;
       P.y[slotOf(h)] = 12;
     }
+    // Without its ring the line counts at once (the ring's rule: test 'a ring ...').
+    run.rings.length = 0;
     flyBoth(g, run, 'up', 'holes moved aside');
     // Flights ended every way a held flight can; the only one timing out is ↓, which leaves the ship
     // parked on the pad (none that flies hovers for 12 s).
@@ -463,7 +492,9 @@ describe('levels', () => {
     for (const field of [FIELD, { width: 20, height: 30 }]) {
       const g = createBlackHoleGame({ seed: 2, field });
       const run = startLevel(g, 2);
-      expect(g.message).toBe('Level 2: reach the green line for 200 points, more if fast. Find the gap in the wall.');
+      expect(g.message).toBe(
+        'Level 2: fly through the gold ring, then reach the green line for 200 points, more if fast. Find the gap in the wall.',
+      );
       expect(pilot(g, run, 60).event, `${field.width} m field`).toBe('cleared');
       expect(run.summary!.levelPoints).toBe(200);
     }
@@ -484,7 +515,9 @@ describe('levels', () => {
     // The next thrust starts the winning attempt and brings back the level's opening line.
     setThrust(g, 'left');
     stepLevel(g, run);
-    expect(g.message).toBe('Level 1: reach the green line for 100 points, more if fast. Practice: falling in costs no life here.');
+    expect(g.message).toBe(
+      'Level 1: fly through the gold ring, then reach the green line for 100 points, more if fast. Practice: falling in costs no life here.',
+    );
     const r = pilot(g, run, 30);
     expect(r.event).toBe('cleared');
     const k = r.steps + 1;
@@ -751,7 +784,7 @@ describe('levels', () => {
     beginLevel(g, run);
     expect(run.waiting).toBe(false);
     expect(g.holes.length).toBe(levelSpec(5).holes);
-    expect(g.message).toBe('Level 5: reach the green line for 500 points, more if fast.');
+    expect(g.message).toBe('Level 5: fly through the gold ring, then reach the green line for 500 points, more if fast.');
     expect(shipY(g)).toBeLessThan(LINE_Y);
     // A clear at full lives keeps three.
     const g2 = createBlackHoleGame({ seed: 3 });

@@ -40,13 +40,20 @@ export const PLAYERS: Readonly<Record<'sharp' | 'middle' | 'slow', PlayerStyle>>
 });
 
 /**
- * A way from the ship's start to the finish line that keeps `margin(r)` m from each hole's centre
- * (r its horizon radius, m) and prefers open field, as a player picks one by eye: the cheapest path
- * on a 0.5 m grid (8 neighbours; a cell is closed within the margin of a hole or 0.5 m of a side),
- * each move costing its length times 1 + 4 / (1 + the cell's clearance beyond the margin, m).
- * @returns the cells' centres from the start to the line, m (x, y pairs); empty when none reaches it.
+ * A way from `from` (m; default the ship's start) to the finish line, or to `to` (m) when given, that
+ * keeps `margin(r)` m from each hole's centre (r its horizon radius, m) and prefers open field, as a
+ * player picks one by eye: the cheapest path on a 0.5 m grid (8 neighbours; a cell is closed within the
+ * margin of a hole or 0.5 m of a side), each move costing its length times 1 + 4 / (1 + the cell's
+ * clearance beyond the margin, m). The way ends at the first cell on the line's row, or within 0.5 m
+ * of `to` (then at `to` itself).
+ * @returns the cells' centres from the start to the end, m (x, y pairs); empty when none reaches it.
  */
-export function planRoute(g: BlackHoleGame, margin: (r: number) => number): [number, number][] {
+export function planRoute(
+  g: BlackHoleGame,
+  margin: (r: number) => number,
+  from: readonly [number, number] = g.start,
+  to?: readonly [number, number],
+): [number, number][] {
   const cell = 0.5,
     nx = Math.floor(g.field.width / cell),
     ny = Math.ceil(g.lineY / cell) + 1;
@@ -61,10 +68,14 @@ export function planRoute(g: BlackHoleGame, margin: (r: number) => number): [num
       for (const [hx, hy, r] of hs) clear = Math.min(clear, Math.hypot(x - hx, y - hy) - r);
       weight[j * nx + i] = clear > 0 ? 1 + 4 / (1 + clear) : Number.POSITIVE_INFINITY;
     }
-  const startCell = Math.round(g.start[1] / cell) * nx + Math.floor(g.start[0] / cell);
+  const cellOf = (p: readonly [number, number]): number =>
+    Math.max(0, Math.min(ny - 1, Math.round(p[1] / cell))) * nx + Math.max(0, Math.min(nx - 1, Math.floor(p[0] / cell)));
+  const startCell = cellOf(from),
+    goal = to ? cellOf(to) : -1;
+  if (goal >= 0) weight[goal] = 1;
   weight[startCell] = 1;
   const cost = new Float64Array(nx * ny).fill(Number.POSITIVE_INFINITY),
-    from = new Int32Array(nx * ny).fill(-1),
+    prev = new Int32Array(nx * ny).fill(-1),
     done = new Uint8Array(nx * ny);
   cost[startCell] = 0;
   // Dijkstra with a plain scan of an open list: the grid is small (about 3000 cells).
@@ -80,7 +91,7 @@ export function planRoute(g: BlackHoleGame, margin: (r: number) => number): [num
     done[c] = 1;
     const i = c % nx,
       j = (c - i) / nx;
-    if (j === ny - 1) {
+    if (goal >= 0 ? c === goal : j === ny - 1) {
       end = c;
       break;
     }
@@ -94,16 +105,28 @@ export function planRoute(g: BlackHoleGame, margin: (r: number) => number): [num
         const next = cost[c]! + cell * Math.hypot(di, dj) * weight[d]!;
         if (next < cost[d]!) {
           cost[d] = next;
-          from[d] = c;
+          prev[d] = c;
           open.push(d);
         }
       }
   }
   if (end < 0) return [];
   const cells: number[] = [];
-  for (let c = end; c !== startCell; c = from[c]!) cells.push(c);
+  for (let c = end; c !== startCell; c = prev[c]!) cells.push(c);
   cells.reverse();
-  return cells.map((c) => [((c % nx) + 0.5) * cell, Math.floor(c / nx) * cell]);
+  const way = cells.map((c): [number, number] => [((c % nx) + 0.5) * cell, Math.floor(c / nx) * cell]);
+  if (to && way.length > 0) way[way.length - 1] = [to[0], to[1]];
+  return way;
+}
+
+/**
+ * The way a player takes now on a level with rings (games/black-hole/levels.ts `LevelSpec.rings`):
+ * `planRoute` from the start, or from the ring last taken, to the next ring, or to the line when every
+ * ring is taken. The player follows it to its end and plans the next leg when the ring is taken.
+ */
+export function planLeg(g: BlackHoleGame, run: LevelRun, margin: (r: number) => number): [number, number][] {
+  const from = run.ringsTaken > 0 ? run.rings[run.ringsTaken - 1]! : g.start;
+  return planRoute(g, margin, from, run.rings[run.ringsTaken]);
 }
 
 /** How a level went for a player: tries (each fall or exit ends one), whether and when it cleared. */
@@ -120,6 +143,13 @@ export interface LevelOutcome {
   readonly totalTime: number;
 }
 
+/**
+ * How a player slows nearing a ring: at most RING_EASE[0] + RING_EASE[1] x the distance to its centre,
+ * m/s (2.5 m/s passing through it, the style's speed from some 3 m out), so the turn to the next ring
+ * is not taken at full speed.
+ */
+export const RING_EASE: readonly [number, number] = Object.freeze([1.5, 0.8]);
+
 const ARROWS: readonly Thrust[] = ['up', 'down', 'left', 'right', 'up-left', 'up-right', 'down-left', 'down-right'];
 
 /**
@@ -127,7 +157,7 @@ const ARROWS: readonly Thrust[] = ['up', 'down', 'left', 'right', 'up-left', 'up
  * given style, for at most `limit` s of game time, lives never running out. Each choice finds the
  * ship where it will be when the press lands (position and velocity carried on `lag` s), the point of
  * the route about 3 m past the nearest one, and presses the arrow or pair (or none, within 0.6 m/s)
- * that best turns the velocity towards `style.speed` m/s at that point. Drifting holes are planned
+ * that best turns the velocity towards `style.speed` m/s at that point (less nearing a ring: `RING_EASE`). Drifting holes are planned
  * round anew at each choice; still ones at the start and after each fall or exit. The interval to the
  * next choice is drawn in [0.75, 1.25] x react from an Rng seeded with `seed`.
  * @throws RangeError unless limit > 0 and the style's numbers are in range.
@@ -143,7 +173,8 @@ export function playLevel(level: number, seed: number, style: PlayerStyle, limit
   const margin = (r: number): number => style.keep * r + SHIP_RADIUS + 0.5;
   const P = g.world.components.Position,
     V = g.world.components.Velocity;
-  let way = planRoute(g, margin);
+  let way = planLeg(g, run, margin),
+    leg = run.ringsTaken;
   const pending: { at: number; thrust: Thrust }[] = [];
   let chosen: Thrust = 'none',
     nextLook = 0,
@@ -151,7 +182,7 @@ export function playLevel(level: number, seed: number, style: PlayerStyle, limit
   for (let k = 0; k * dt < limit; k++) {
     if (k >= nextLook && canThrust(g, run)) {
       nextLook = k + Math.max(1, Math.round((style.react * rng.range(0.75, 1.25)) / dt));
-      if (run.spec.drift > 0) way = planRoute(g, margin);
+      if (run.spec.drift > 0 || leg !== run.ringsTaken) [way, leg] = [planLeg(g, run, margin), run.ringsTaken];
       const s = slotOf(g.ship),
         lag = style.lag;
       const vx = V.x[s]! + g.thrustVec[0] * lag,
@@ -164,10 +195,13 @@ export function playLevel(level: number, seed: number, style: PlayerStyle, limit
       let aim = near;
       for (let along = 0; aim + 1 < way.length && along < 3; aim++)
         along += Math.hypot(way[aim + 1]![0] - way[aim]![0], way[aim + 1]![1] - way[aim]![1]);
-      const [ax, ay] = way.length > 0 ? way[aim]! : [x, g.lineY];
+      const [ax, ay] = way.length > 0 ? way[aim]! : (run.rings[run.ringsTaken] ?? [x, g.lineY]);
       const d = Math.hypot(ax - x, ay - y) || 1;
-      const ex = (style.speed * (ax - x)) / d - vx,
-        ey = (style.speed * (ay - y)) / d - vy,
+      // Nearing a ring the player eases off (to turn for the next one): RING_EASE.
+      const ring = run.rings[run.ringsTaken];
+      const speed = ring ? Math.min(style.speed, RING_EASE[0] + RING_EASE[1] * Math.hypot(ring[0] - x, ring[1] - y)) : style.speed;
+      const ex = (speed * (ax - x)) / d - vx,
+        ey = (speed * (ay - y)) / d - vy,
         e = Math.hypot(ex, ey);
       let want: Thrust = 'none',
         best = Number.NEGATIVE_INFINITY;
@@ -192,7 +226,7 @@ export function playLevel(level: number, seed: number, style: PlayerStyle, limit
       pending.length = 0;
       chosen = 'none';
       nextLook = k + 1;
-      way = planRoute(g, margin);
+      [way, leg] = [planLeg(g, run, margin), run.ringsTaken];
     }
     if (g.lives < 3) g.lives = 9;
   }
@@ -260,14 +294,17 @@ export type HoldEnd = 'cleared' | 'fell' | 'lost' | 'timeout';
  * `level` of a game of seed `seed` on `field` (default the game's 32 x 24 m), ↑ pressed `wait` s
  * after the level began (the holes drift meanwhile: a player waits for the path to turn blue), held
  * `hold` s (> 0) and let go, then nothing else pressed, the game stepped (`stepLevel`) until the
- * line is crossed, the ship falls in or leaves the field, or `limit` s of game time pass.
+ * line is crossed, the ship falls in or leaves the field, or `limit` s of game time pass. `rings`
+ * false takes the level's rings away (games/black-hole/levels.ts `LevelSpec.rings`), so the line
+ * counts at once: the hold then meets the holes alone.
  * @throws RangeError unless hold > 0 and limit > hold.
  */
-export function singleHold(level: number, seed: number, hold: number, field?: FieldSize, wait = 0, limit = 20): HoldEnd {
+export function singleHold(level: number, seed: number, hold: number, field?: FieldSize, wait = 0, limit = 20, rings = true): HoldEnd {
   if (!(hold > 0 && wait >= 0 && limit > wait + hold))
     throw new RangeError(`singleHold: hold must be > 0 s, wait >= 0 s and limit > wait + hold, got ${hold}, ${wait}, ${limit}`);
   const g = createBlackHoleGame({ seed, lives: 9, ...(field ? { field } : {}) });
   const run = startLevel(g, level);
+  if (!rings) run.rings.length = 0;
   const dt = g.world.dt;
   const from = Math.round(wait / dt),
     to = from + Math.round(hold / dt);

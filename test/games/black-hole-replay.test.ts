@@ -6,11 +6,11 @@
  * counters are compared exactly).
  */
 
-import { stateHash } from '@bitphysics/physics';
+import { slotOf, stateHash } from '@bitphysics/physics';
 import { describe, expect, test } from 'vitest';
-import { canThrust, type LevelRun, startLevel } from '../../games/black-hole/levels';
+import { canThrust, type LevelRun, startLevel, stepLevel } from '../../games/black-hole/levels';
 import { type BlackHoleReplay, createBlackHoleReplay, REPLAY_LEAD_STEPS } from '../../games/black-hole/replay';
-import { type BlackHoleGame, createBlackHoleGame } from '../../games/black-hole/rules';
+import { type BlackHoleGame, createBlackHoleGame, setThrust } from '../../games/black-hole/rules';
 
 const summary = (g: BlackHoleGame, run: LevelRun) => ({
   hash: stateHash(g.world),
@@ -25,7 +25,31 @@ const summary = (g: BlackHoleGame, run: LevelRun) => ({
   fuel: run.fuelLeft,
   time: run.time,
   rng: { ...g.rng },
+  rings: run.rings.map((r) => [...r]),
+  ringsTaken: run.ringsTaken,
 });
+
+/**
+ * Level 1 of a game of `seed`, its ring moved onto the way `playRecorded` flies (where a dry run of it
+ * without the ring is at step 300: after the fall, on the climb), so the recorded run clears it.
+ */
+function ringedLevel1(seed: number): { g: BlackHoleGame; run: LevelRun } {
+  const dry = createBlackHoleGame({ seed }),
+    dryRun = startLevel(dry, 1);
+  dryRun.rings.length = 0;
+  const at: [number, number] = [0, 0];
+  for (let k = 0; k <= 300; k++) {
+    const want = !canThrust(dry, dryRun) ? 'none' : k < 180 ? 'up' : k < 204 ? 'right' : k % 36 < 15 ? 'up' : 'none';
+    if (dry.thrust !== want) setThrust(dry, want);
+    stepLevel(dry, dryRun);
+    at[0] = dry.world.components.Position.x[slotOf(dry.ship)]!;
+    at[1] = dry.world.components.Position.y[slotOf(dry.ship)]!;
+  }
+  const g = createBlackHoleGame({ seed });
+  const run = startLevel(g, 1);
+  run.rings[0] = at;
+  return { g, run };
+}
 
 /**
  * Holds thrust up for 3 s (into level 1's hole), then thrusts right for 0.4 s and taps thrust up (on
@@ -43,10 +67,7 @@ function playRecorded(g: BlackHoleGame, run: LevelRun, replay: BlackHoleReplay, 
 
 describe('black hole replay', () => {
   test('a recorded run replays to the same final state, rewound in the same game and in a new game', () => {
-    const make = () => {
-      const g = createBlackHoleGame({ seed: 4 });
-      return { g, run: startLevel(g, 1) };
-    };
+    const make = () => ringedLevel1(4);
     const { g, run } = make();
     const replay = createBlackHoleReplay(g, run);
     playRecorded(g, run, replay, 1500);
@@ -85,8 +106,7 @@ describe('black hole replay', () => {
   });
 
   test('a replay skips the idle wait before the first thrust and after a clear, and still ends bit-equal', () => {
-    const g = createBlackHoleGame({ seed: 4 });
-    const run = startLevel(g, 1);
+    const { g, run } = ringedLevel1(4);
     const replay = createBlackHoleReplay(g, run);
     // A player who reads the screen for 15 s before the first thrust (the stranger's phone run).
     const idle = 900;

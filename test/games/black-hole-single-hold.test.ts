@@ -42,11 +42,13 @@ describe('black hole: one hold of ↑ does not clear a late level', () => {
   test('the check can fail: after a wait longer than any the layout check flies, a hold clears level 8; held ↑ on level 6 falls in', () => {
     // The measure itself says 'cleared' where a hold gets through: on level 8 (seed 1, the desktop's
     // field) the holes drift for 10 s and then holds of 0.5 to 0.8 s get through (the layout check
-    // waits at most 6 s). Level 3's zig-zag, which let 7 of the 26 through, is now checked too.
+    // waits at most 6 s; level 8 has no ring). Level 3's zig-zag, which let 7 of the 26 through, is now checked too.
     expect(levelSpec(5).anchored).toBe(false);
     expect([6, 7, 8].map((l) => levelSpec(l).anchored)).toEqual([true, true, true]);
-    const hits = HOLDS.filter((hold) => singleHold(8, 1, hold, FIELD, 10) === 'cleared').length;
+    const hits = HOLDS.filter((hold) => singleHold(8, 1, hold, FIELD, 10, 20, false) === 'cleared').length;
     expect(hits).toBeGreaterThan(0);
+    // Level 7's ring stops such holds: after the same wait none clears it.
+    expect(HOLDS.filter((hold) => singleHold(7, 1, hold, FIELD, 10) === 'cleared')).toEqual([]);
     expect(HOLDS.filter((hold) => singleHold(3, 1, hold, FIELD) === 'cleared')).toEqual([]);
     expect(singleHold(6, 1, 3, FIELD)).toBe('fell');
   }, 60_000);

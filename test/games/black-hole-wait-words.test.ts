@@ -26,9 +26,11 @@ describe('black hole wait words', () => {
     expect(e).toBe('fell');
     expect(words()).toBe('Swallowed!\nPractice: no life lost\nPress ↑, ← or → to fly on');
     expect(words(true)).toBe('Swallowed!\nPractice: no life lost\nTap ↑, ← or → to fly on');
-    // The ship set just under the line, climbing: the level is cleared; the next begins. No fall words.
+    // The ring taken and the ship set just under the line, climbing: the level is cleared; the next
+    // begins. No fall words.
     setThrust(g, 'none');
     run.parked = false;
+    run.ringsTaken = run.rings.length;
     setPosition(g.world, g.ship, [g.start[0], g.lineY - 0.01]);
     setVelocity(g.world, g.ship, [0, 2]);
     last = nextHappening(last, (e = stepLevel(g, run)));
