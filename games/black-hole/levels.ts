@@ -389,6 +389,8 @@ export interface LevelRun {
   readonly rings: [number, number][];
   /** Rings flown through on the current attempt (a fall or an exit starts the count again), integer >= 0. */
   ringsTaken: number;
+  /** Whether the last attempt ended by flying past the line with a ring left (lost off the top); false until one does. */
+  missedRing: boolean;
   /** Sideways velocity of each hole, m/s (same order as game.holes). */
   readonly holeVx: number[];
   /** Between levels (after a clear, before `beginLevel`): steps do nothing. */
@@ -423,6 +425,7 @@ export function startLevel(game: BlackHoleGame, level: number): LevelRun {
     fuelLeft: 0,
     rings: [],
     ringsTaken: 0,
+    missedRing: false,
     holeVx: [],
     waiting: false,
     summary: null,
@@ -1113,6 +1116,7 @@ export function stepLevel(game: BlackHoleGame, run: LevelRun): BlackHoleEvent | 
   if (event === 'fell' || event === 'lost') {
     const missed = event === 'lost' && run.ringsTaken < run.rings.length && y0 >= game.lineY - 1;
     run.ringsTaken = 0;
+    run.missedRing = missed;
     if (missed)
       game.message = `Missed ${run.rings.length === 1 ? 'the ring' : 'a ring'}: the line counts only after every ring. Back to the start.`;
   }

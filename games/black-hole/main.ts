@@ -1531,7 +1531,7 @@ function startDeath(): void {
 
 /** Puts the words for the last happening (`happening`) over the field, in `color`. */
 function setWaitWords(color: number): void {
-  waitText = waitWords(happening, { lives: bh.lives, practice: run?.spec.practice === true, touch });
+  waitText = waitWords(happening, { lives: bh.lives, practice: run?.spec.practice === true, touch, missedRing: run?.missedRing === true });
   deathText.style.fill = color;
   deathText.text = waitText;
 }

@@ -18,11 +18,14 @@ export interface WaitContext {
   readonly lives: number;
   readonly practice: boolean;
   readonly touch: boolean;
+  /** Whether the loss was a flight past the line with a ring left (`LevelRun.missedRing`). Default false. */
+  readonly missedRing?: boolean;
 }
 
 /**
  * The words for `happening`, lines separated by '\n': a fall's ("Swallowed!", the lives left or the
- * practice note, how to go on), a loss off the field's ("Lost in space", no life lost, how to go on), a
+ * practice note, how to go on), a loss off the field's ("Lost in space", or "Missed the ring" past the
+ * line with a ring left; no life lost; how to go on), a
  * game over's; '' when there is nothing to say ('level', 'flying').
  * @throws RangeError when `ctx.lives` is not an integer in [0, 99].
  */
@@ -39,7 +42,9 @@ export function waitWords(happening: ShipHappening, ctx: WaitContext): string {
         ? `Swallowed!\nPractice: no life lost\n${go}`
         : `Swallowed!\n${ctx.lives} ${ctx.lives === 1 ? 'life' : 'lives'} left\n${go}`;
     case 'lost':
-      return `Lost in space!\nBack to the start, no life lost\n${go}`;
+      return ctx.missedRing === true
+        ? `Missed the ring!\nThe line counts after it: back to the start, no life lost\n${go}`
+        : `Lost in space!\nBack to the start, no life lost\n${go}`;
     default:
       return '';
   }

@@ -56,6 +56,34 @@ describe('black hole wait words', () => {
     expect(words()).toBe('Swallowed!\n2 lives left\nPress ↑, ← or → to fly on');
   });
 
+  test('past the line with the ring left: the words say the ring was missed, not only "Lost in space"', () => {
+    const g = createBlackHoleGame({ seed: 3 });
+    const run = startLevel(g, 1);
+    expect(run.rings.length).toBe(1);
+    let last: ShipHappening = 'level';
+    // The ship set just under the line, climbing fast, the ring not taken: the line is closed, so it
+    // flies on out of the top of the field.
+    run.parked = false;
+    setPosition(g.world, g.ship, [g.start[0], g.lineY - 0.01]);
+    setVelocity(g.world, g.ship, [0, 6]);
+    let e = '';
+    for (let k = 0; k < 600 && e !== 'lost'; k++) last = nextHappening(last, (e = stepLevel(g, run)));
+    expect(e).toBe('lost');
+    expect(run.missedRing).toBe(true);
+    const words = waitWords(last, { lives: g.lives, practice: run.spec.practice, touch: false, missedRing: run.missedRing });
+    expect(words).toBe('Missed the ring!\nThe line counts after it: back to the start, no life lost\nPress ↑, ← or → to fly on');
+    expect(g.message).toMatch(/^Missed the ring/);
+    // Off a side edge, the ring still left: plain "Lost in space".
+    run.parked = false;
+    setPosition(g.world, g.ship, [0.01, 3]);
+    setVelocity(g.world, g.ship, [-2, 0]);
+    e = '';
+    for (let k = 0; k < 600 && e !== 'lost'; k++) last = nextHappening(last, (e = stepLevel(g, run)));
+    expect(e).toBe('lost');
+    expect(run.missedRing).toBe(false);
+    expect(waitWords(last, { lives: g.lives, practice: false, touch: true, missedRing: run.missedRing })).toMatch(/^Lost in space!/);
+  });
+
   test('paused, the last line says how to resume (one message, not two stacked)', () => {
     expect(pausedWords('Swallowed!\n1 life left\nTap ↑, ← or → to fly on', 'Paused\n▶ to resume')).toBe(
       'Swallowed!\n1 life left\nPaused: ▶ to resume',
