@@ -33,6 +33,17 @@ import { buildLevel, LAUNCH, LEVEL_COUNT, ROCK, worldOptions } from '../../games
 /** A phone held upright, nothing thrown. */
 const aiming: CameraInput = { upright: true, peeking: false, shotView: false, wreck: false, zoomsIn: true };
 
+/** Level `level`'s (0-based) field as the page frames it: the castle's extent and top, and the lowest ground. */
+function levelField(level: number): Field {
+  const lv = buildLevel(createPhysicsWorld(worldOptions({ gravity: 9.81 })), { level, seed: 1, gravity: 9.81, jointStrength: 400 });
+  return {
+    castleMinX: lv.castleMinX,
+    castleMaxX: lv.castleMaxX,
+    castleTop: lv.castleTop,
+    floor: Math.min(0, ...lv.terrain.map((t) => t.maxY)),
+  };
+}
+
 describe('catapult camera', () => {
   it('upright: the aim view (the catapult and the whole castle) from the level start', () => {
     // An opening on the castle alone hid the catapult: a stranger saw a target and nothing to shoot from.
@@ -66,14 +77,7 @@ describe('catapult camera', () => {
     const inside = (b: number[]) => b[0]! >= 0 && b[1]! >= 0 && b[2]! <= W && b[3]! <= H;
     const shownWhileAiming: number[] = [];
     for (let level = 0; level < LEVEL_COUNT; level++) {
-      const w = createPhysicsWorld(worldOptions({ gravity: 9.81 }));
-      const lv = buildLevel(w, { level, seed: 1, gravity: 9.81, jointStrength: 400 });
-      const f: Field = {
-        castleMinX: lv.castleMinX,
-        castleMaxX: lv.castleMaxX,
-        castleTop: lv.castleTop,
-        floor: Math.min(0, ...lv.terrain.map((t) => t.maxY)),
-      };
+      const f = levelField(level);
       const aim = uprightAimView(f, W, H),
         close = uprightCastleView(f, W, H);
       const tag = `level ${level + 1}`;
@@ -131,14 +135,7 @@ describe('catapult camera', () => {
     const minY = -1;
     let least = Number.POSITIVE_INFINITY;
     for (let level = 0; level < LEVEL_COUNT; level++) {
-      const w = createPhysicsWorld(worldOptions({ gravity: 9.81 }));
-      const lv = buildLevel(w, { level, seed: 1, gravity: 9.81, jointStrength: 400 });
-      const f: Field = {
-        castleMinX: lv.castleMinX,
-        castleMaxX: lv.castleMaxX,
-        castleTop: lv.castleTop,
-        floor: Math.min(0, ...lv.terrain.map((t) => t.maxY)),
-      };
+      const f = levelField(level);
       const tag = `level ${level + 1}`;
       const { field, castle } = wideViews(f, W, H, Math.min(minY, f.floor - 0.6));
       for (const v of [field, castle]) expect((v.maxY - v.minY) / (v.maxX - v.minX), tag).toBeCloseTo(H / W, 6);
@@ -171,14 +168,7 @@ describe('catapult camera', () => {
   it('upright 390 x 844 on every level: the view following a stone draws it 24 px across and keeps it in view, the castle ahead', () => {
     const [W, H] = [390, 844];
     for (let level = 0; level < LEVEL_COUNT; level++) {
-      const w = createPhysicsWorld(worldOptions({ gravity: 9.81 }));
-      const lv = buildLevel(w, { level, seed: 1, gravity: 9.81, jointStrength: 400 });
-      const f: Field = {
-        castleMinX: lv.castleMinX,
-        castleMaxX: lv.castleMaxX,
-        castleTop: lv.castleTop,
-        floor: Math.min(0, ...lv.terrain.map((t) => t.maxY)),
-      };
+      const f = levelField(level);
       const aimPerM = W / (uprightAimView(f, W, H).maxX - uprightAimView(f, W, H).minX);
       // Drag-free arcs from the catapult to the castle's middle: a 45 degree throw and a 65 degree lob.
       const R = (f.castleMinX + f.castleMaxX) / 2 - LAUNCH.x;

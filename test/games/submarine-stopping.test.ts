@@ -12,13 +12,18 @@ import { SUBMARINE, SUBMARINE_NEUTRAL_FILL, submarine } from '@bitphysics/projec
 import { describe, expect, it } from 'vitest';
 import { coastDistance, createHelmState, HELM, type HelmInput, NO_INPUT, steer } from '../../games/submarine/helm';
 
-/** A boat hovering 30 m down on a calm sea over open water, run at full ahead until steady; its stop under `input`. */
-function stopFromFullAhead(input: Partial<HelmInput>): { distance: number; time: number; mass: number } {
+/** A neutrally trimmed boat hovering 30 m down on a calm sea over open water (no seabed within reach), and its helm. */
+function calmBoat() {
   const world = createPhysicsWorld(submarine.worldOptions());
   const h = submarine.build(world, { seed: 1, count: 0, fill: SUBMARINE_NEUTRAL_FILL, position: [0, -30] });
   world.components.FluidRegion.surface.fill(0);
   h.seabed.y.fill(-1000);
-  const helm = createHelmState(SUBMARINE_NEUTRAL_FILL);
+  return { world, h, helm: createHelmState(SUBMARINE_NEUTRAL_FILL) };
+}
+
+/** A boat hovering 30 m down on a calm sea over open water, run at full ahead until steady; its stop under `input`. */
+function stopFromFullAhead(input: Partial<HelmInput>): { distance: number; time: number; mass: number } {
+  const { world, h, helm } = calmBoat();
   const c = world.components,
     e = h.hull;
   const run = (inp: Partial<HelmInput>, seconds: number, each?: (t: number) => boolean) => {
@@ -64,11 +69,7 @@ describe('submarine speed control', () => {
   });
 
   it('a beacon overshot by 15 m is backed onto (the hull 8 m off it, the ring) in under 2.6 s from a stop at full Astern (3.0 s at the old half speed astern, 4 m/s)', () => {
-    const world = createPhysicsWorld(submarine.worldOptions());
-    const h = submarine.build(world, { seed: 1, count: 0, fill: SUBMARINE_NEUTRAL_FILL, position: [0, -30] });
-    world.components.FluidRegion.surface.fill(0);
-    h.seabed.y.fill(-1000);
-    const helm = createHelmState(SUBMARINE_NEUTRAL_FILL);
+    const { world, h, helm } = calmBoat();
     const c = world.components,
       e = h.hull;
     for (let i = 0; i < 2 / world.dt; i++) {
