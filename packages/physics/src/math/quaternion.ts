@@ -134,7 +134,7 @@ export function rotateVectorInverse(
   rotateVector(-qx, -qy, -qz, qw, vx, vy, vz, out);
 }
 
-/** rotateFrom's orientation, turned in place before it is renormalised, and its rotation vector and angle. */
+/** rotateFrom's and rotateInPlaceBy's orientation, turned in place before it is renormalised, and the rotation vector and angle. */
 const turned = new Float64Array(4),
   turnBy = new Float64Array(4);
 
@@ -196,21 +196,7 @@ export function rotateFrom(
   turnBy[0] = rx;
   turnBy[1] = ry;
   turnBy[2] = rz;
-  turnBy[3] = Math.sqrt(rx * rx + ry * ry + rz * rz);
-  turnQuaternion(turned, turnBy, turned);
-  let nx = turned[0]!;
-  let ny = turned[1]!;
-  let nz = turned[2]!;
-  let nw = turned[3]!;
-  const inv = 1 / Math.sqrt(nx * nx + ny * ny + nz * nz + nw * nw);
-  nx *= inv;
-  ny *= inv;
-  nz *= inv;
-  nw *= inv;
-  qx[e] = nx;
-  qy[e] = ny;
-  qz[e] = nz;
-  qw[e] = nw;
+  turnStored(qx, qy, qz, qw, e);
 }
 
 /**
@@ -228,4 +214,49 @@ export function rotateInPlace(
   rz: number,
 ): void {
   rotateFrom(qx, qy, qz, qw, e, qx[e]!, qy[e]!, qz[e]!, qw[e]!, rx, ry, rz);
+}
+
+/**
+ * q[e] = exp(r / 2) q[e] with the rotation vector in r[0..2] (rad): rotateInPlace for loops over the
+ * bodies, its operands in an array for the reason quaternionProduct gives.
+ * @category Utilities
+ */
+export function rotateInPlaceBy(
+  qx: Float64Array,
+  qy: Float64Array,
+  qz: Float64Array,
+  qw: Float64Array,
+  e: number,
+  r: ArrayLike<number>,
+): void {
+  turned[0] = qx[e]!;
+  turned[1] = qy[e]!;
+  turned[2] = qz[e]!;
+  turned[3] = qw[e]!;
+  turnBy[0] = r[0]!;
+  turnBy[1] = r[1]!;
+  turnBy[2] = r[2]!;
+  turnStored(qx, qy, qz, qw, e);
+}
+
+/** q[e] = the orientation in `turned` turned by the rotation vector in turnBy[0..2], renormalised. */
+function turnStored(qx: Float64Array, qy: Float64Array, qz: Float64Array, qw: Float64Array, e: number): void {
+  const rx = turnBy[0]!,
+    ry = turnBy[1]!,
+    rz = turnBy[2]!;
+  turnBy[3] = Math.sqrt(rx * rx + ry * ry + rz * rz);
+  turnQuaternion(turned, turnBy, turned);
+  let nx = turned[0]!;
+  let ny = turned[1]!;
+  let nz = turned[2]!;
+  let nw = turned[3]!;
+  const inv = 1 / Math.sqrt(nx * nx + ny * ny + nz * nz + nw * nw);
+  nx *= inv;
+  ny *= inv;
+  nz *= inv;
+  nw *= inv;
+  qx[e] = nx;
+  qy[e] = ny;
+  qz[e] = nz;
+  qw[e] = nw;
 }
