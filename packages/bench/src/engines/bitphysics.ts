@@ -1,3 +1,4 @@
+import { GCProfiler } from 'node:v8';
 import {
   contactCount,
   createPhysicsWorld,
@@ -70,6 +71,10 @@ function bitphysicsAdapter(name: string, threads: number): EngineAdapter {
           (threads > 1 ? `, threads ${threads}` : '') +
           (options.warmUp === true ? `, warm-up scene run first: ${warmMs.toFixed(0)} ms (counted in setup ms)` : ''),
       ];
+      // The garbage collections of this thread while the timed steps run (V8's GCProfiler: each
+      // collection's kind and cost): a step that allocates makes them, and each pauses a step.
+      let gcProfiler: GCProfiler | null = null;
+      let gc = { gcCount: 0, gcMs: 0 };
       return {
         engine: name,
         notes,
@@ -78,16 +83,22 @@ function bitphysicsAdapter(name: string, threads: number): EngineAdapter {
           step(w);
         },
         stats() {
-          const extra = options.hash ? { ...(probe ? probe.extras() : {}), stateHash: stateHash(w) } : probe ? probe.extras() : undefined;
+          const extra = { ...(probe ? probe.extras() : {}), ...(options.hash ? { stateHash: stateHash(w) } : {}), ...gc };
           const bodies = probe?.bodies ? probe.bodies() : ids.length;
-          return extra ? { bodies, contacts: contactCount(w), extra } : { bodies, contacts: contactCount(w) };
+          return { bodies, contacts: contactCount(w), extra };
         },
         beginTiming(steps: number): void {
           probe?.beginTiming?.(steps);
+          gcProfiler = new GCProfiler();
+          gcProfiler.start();
         },
         afterStep: probe?.afterStep ? () => probe.afterStep!() : undefined,
         endTiming(): void {
           probe?.endTiming?.();
+          const collections = gcProfiler?.stop().statistics ?? [];
+          gcProfiler = null;
+          // cost is in microseconds.
+          gc = { gcCount: collections.length, gcMs: Math.round(collections.reduce((sum, c) => sum + c.cost, 0)) / 1000 };
         },
         snapshot(): BodySnapshot {
           const c = w.components;

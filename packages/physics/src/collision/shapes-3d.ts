@@ -1,7 +1,7 @@
 import { hasComponent } from 'bitecs';
 import { wakeIslandForStep } from '../islands/step-wake.js';
 import { M00, M01, M02, M10, M11, M12, M20, M21, M22, MAT3_STRIDE } from '../math/mat3-layout.js';
-import { multiplyQuaternions, rotateVector, rotationMatrix, turnQuaternion } from '../math/quaternion.js';
+import { quaternionProduct, quaternionRotate, rotationMatrix, turnQuaternion } from '../math/quaternion.js';
 import { Shape3DKind, type Shape3DStore, shapes3DOf } from '../shapes/store-3d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { query } from '../world/query.js';
@@ -88,7 +88,9 @@ function sensorEvents(world: PhysicsWorld, st: Contact3DState): void {
   st.sensingNow = t;
 }
 
-const bodyQ = new Float64Array(4);
+/** The body's start-of-step orientation (x, y, z, w), and the rotation (x, y, z, angle) that turns it back. */
+const bodyQ = new Float64Array(4),
+  turnBack = new Float64Array(4);
 
 /** Start-of-step orientation of body b into bodyQ (the current one turned back by w h). */
 function startOrientation(world: PhysicsWorld, b: number, turning: boolean, isBall: boolean): void {
@@ -108,7 +110,11 @@ function startOrientation(world: PhysicsWorld, b: number, turning: boolean, isBa
     rz = -W.z[b]! * h;
   const a = Math.sqrt(rx * rx + ry * ry + rz * rz);
   if (!(a > 0)) return;
-  turnQuaternion(bodyQ, rx, ry, rz, a, bodyQ);
+  turnBack[0] = rx;
+  turnBack[1] = ry;
+  turnBack[2] = rz;
+  turnBack[3] = a;
+  turnQuaternion(bodyQ, turnBack, bodyQ);
   const nx = bodyQ[0]!,
     ny = bodyQ[1]!,
     nz = bodyQ[2]!,
@@ -148,7 +154,7 @@ function markClasses(world: PhysicsWorld): number {
 
 /** The offset of a shape's centre from its body's centre, m (world), written by colliderRotation. */
 const shapeShift = new Float64Array(3);
-/** The shape's orientation in the world (colliderRotation): the body's composed with the placement. */
+/** colliderRotation's shape orientation: the placement, then the world one (the body's composed with it). */
 const shapeQ = new Float64Array(4);
 
 /**
@@ -169,13 +175,16 @@ function colliderRotation(s: Shape3DStore, e: number, isBall: boolean, R: Float6
     R[o + M22] = 1;
     return;
   }
-  const qx = bodyQ[0]!,
-    qy = bodyQ[1]!,
-    qz = bodyQ[2]!,
-    qw = bodyQ[3]!;
   // Shape pose: body pose composed with the placement.
-  rotateVector(qx, qy, qz, qw, s.px[e]!, s.py[e]!, s.pz[e]!, shapeShift);
-  multiplyQuaternions(qx, qy, qz, qw, s.qx[e]!, s.qy[e]!, s.qz[e]!, s.qw[e]!, shapeQ);
+  shapeShift[0] = s.px[e]!;
+  shapeShift[1] = s.py[e]!;
+  shapeShift[2] = s.pz[e]!;
+  quaternionRotate(bodyQ, shapeShift, shapeShift);
+  shapeQ[0] = s.qx[e]!;
+  shapeQ[1] = s.qy[e]!;
+  shapeQ[2] = s.qz[e]!;
+  shapeQ[3] = s.qw[e]!;
+  quaternionProduct(bodyQ, shapeQ, shapeQ);
   rotationMatrix(shapeQ[0]!, shapeQ[1]!, shapeQ[2]!, shapeQ[3]!, R, o);
 }
 

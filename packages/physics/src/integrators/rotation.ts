@@ -1,4 +1,4 @@
-import { rotateInPlace } from '../math/quaternion.js';
+import { rotateInPlaceBy } from '../math/quaternion.js';
 import { reportNonFinite } from '../world/errors.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { splitRigidRotations } from './euler-equations.js';
@@ -74,10 +74,13 @@ function advanceAngles(world: PhysicsWorld, ents: ArrayLike<number>, h: number):
   return check;
 }
 
+/** advanceQuaternions' rotation vector w h of one body (scratch). */
+const spin = new Float64Array(3);
+
 /**
  * 3D: q <- exp(w h / 2) q for every body of `ents`; returns the sum of their w components (NaN if one
- * is not finite). The rotation is math/quaternion.ts rotateInPlace, which TurboFan inlines here (with
- * rotateFrom), so the call boxes no number.
+ * is not finite). The rotation is math/quaternion.ts rotateInPlaceBy, its rotation vector in an array:
+ * where V8 does not inline the call, numbers would go boxed, a few heap numbers a body a step.
  */
 function advanceQuaternions(world: PhysicsWorld, ents: ArrayLike<number>, h: number): number {
   const c = world.components;
@@ -92,7 +95,10 @@ function advanceQuaternions(world: PhysicsWorld, ents: ArrayLike<number>, h: num
       az = wz[e]!;
     check += ax + ay + az;
     if (ax === 0 && ay === 0 && az === 0) continue;
-    rotateInPlace(qx, qy, qz, qw, e, ax * h, ay * h, az * h);
+    spin[0] = ax * h;
+    spin[1] = ay * h;
+    spin[2] = az * h;
+    rotateInPlaceBy(qx, qy, qz, qw, e, spin);
   }
   return check;
 }

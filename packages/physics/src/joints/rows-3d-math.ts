@@ -1,4 +1,4 @@
-import { multiplyQuaternions, rotateVector, turnQuaternion } from '../math/quaternion.js';
+import { quaternionProduct, rotateVector, turnQuaternion } from '../math/quaternion.js';
 import * as BS from '../solver/body-state-layout.js';
 import type { PhysicsWorld } from '../world/options.js';
 
@@ -16,6 +16,10 @@ export const qa = new Float64Array(4),
   pb = new Float64Array(3),
   ra = new Float64Array(3),
   rb = new Float64Array(3);
+
+/** pose's rotation owed (x, y, z, angle) and relativeRotation's conjugate of a: scratch. */
+const owed = new Float64Array(4),
+  conjugate = new Float64Array(4);
 
 /** Current orientation and position of joint end e (solver index k) into q and p. */
 export function pose(world: PhysicsWorld, e: number, k: number, q: Float64Array, p: Float64Array): void {
@@ -47,7 +51,11 @@ export function pose(world: PhysicsWorld, e: number, k: number, q: Float64Array,
     ry = ex[BS.BX_STRIDE * k + BS.BX_ROT_Y]!,
     rz = ex[BS.BX_STRIDE * k + BS.BX_ROT_Z]!,
     a = Math.hypot(rx, ry, rz);
-  if (a > 0) turnQuaternion(q, rx, ry, rz, a, q);
+  owed[0] = rx;
+  owed[1] = ry;
+  owed[2] = rz;
+  owed[3] = a;
+  if (a > 0) turnQuaternion(q, owed, q);
   p[0] = ex[BS.BX_STRIDE * k + BS.BX_BASE_X]! + sb[BS.BS3_STRIDE * k + BS.BS3_DX]!;
   p[1] = ex[BS.BX_STRIDE * k + BS.BX_BASE_Y]! + sb[BS.BS3_STRIDE * k + BS.BS3_DY]!;
   p[2] = ex[BS.BX_STRIDE * k + BS.BX_BASE_Z]! + sb[BS.BS3_STRIDE * k + BS.BS3_DZ]!;
@@ -55,7 +63,11 @@ export function pose(world: PhysicsWorld, e: number, k: number, q: Float64Array,
 
 /** The rotation of B relative to A, conj(a) b, of unit quaternions a and b (x, y, z, w), into out. */
 export function relativeRotation(a: ArrayLike<number>, b: ArrayLike<number>, out: Float64Array): void {
-  multiplyQuaternions(-a[0]!, -a[1]!, -a[2]!, a[3]!, b[0]!, b[1]!, b[2]!, b[3]!, out);
+  conjugate[0] = -a[0]!;
+  conjugate[1] = -a[1]!;
+  conjugate[2] = -a[2]!;
+  conjugate[3] = a[3]!;
+  quaternionProduct(conjugate, b, out);
 }
 
 /** v rotated by the unit quaternion q (x, y, z, w; body to world frame) into out. */
