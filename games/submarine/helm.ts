@@ -256,23 +256,29 @@ export function coastBrake(mass: number, u: number, throttle: number, astern = f
 
 /**
  * The screw's push along the hull, N (positive ahead), for a boat of `mass` kg moving at `u` m/s
- * along its hull (positive ahead) with the throttle at `throttle` (fraction of full, in [-HELM.asternShare, 1]):
- * the throttle's share of `SUBMARINE.maxThrust`, but no more than holds the boat at the speed the
- * throttle asks for (`throttle` times `HELM.topSpeed`): the submerged drag there (k v^2, the scene's
- * drag coefficient k) plus m (v_asked - u) / `HELM.speedTime`, never pulling the other way. Zero
- * with the throttle at zero.
- * @throws RangeError when `mass` is not a finite positive number, or `u` or `throttle` is not finite.
+ * ahead through the water (horizontally, positive ahead) with the throttle at `throttle` (fraction
+ * of full, in [-HELM.asternShare, 1]): the throttle's share of `SUBMARINE.maxThrust`, but no more
+ * than holds the boat at the speed ahead the throttle asks for (`throttle` times `HELM.topSpeed`):
+ * the drag there (k |v| v_x, the scene's drag coefficient k, with `vy` the boat's vertical speed,
+ * m/s: a diving boat drags more) plus m (v_asked - u) / `HELM.speedTime`, pushed along a hull
+ * pitched by `angle` rad (so divided by cos(angle)), never pulling the other way. The speed asked is
+ * the one ahead, not along the pitched hull: a boat diving with its bow down still makes the speed
+ * ahead its throttle asks for. Zero with the throttle at zero.
+ * @throws RangeError when `mass` is not a finite positive number, or `u`, `throttle`, `vy` or `angle` is not finite.
  */
-export function screwPush(mass: number, u: number, throttle: number): number {
+export function screwPush(mass: number, u: number, throttle: number, vy = 0, angle = 0): number {
   if (!(Number.isFinite(mass) && mass > 0)) throw new RangeError(`screwPush: mass must be a finite number > 0 kg, got ${mass}`);
   if (!Number.isFinite(u)) throw new RangeError(`screwPush: u must be finite m/s, got ${u}`);
   if (!Number.isFinite(throttle)) throw new RangeError(`screwPush: throttle must be finite, got ${throttle}`);
+  if (!Number.isFinite(vy)) throw new RangeError(`screwPush: vy must be finite m/s, got ${vy}`);
+  if (!Number.isFinite(angle)) throw new RangeError(`screwPush: angle must be finite rad, got ${angle}`);
   const t = clamp(throttle, -HELM.asternShare, 1);
   if (t === 0) return 0;
   const sign = Math.sign(t),
     asked = Math.abs(t) * HELM.topSpeed;
-  const hold = SUBMARINE.dragCoefficient * asked * asked + (mass * (asked - sign * u)) / HELM.speedTime;
-  return sign * clamp(hold, 0, Math.abs(t) * SUBMARINE.maxThrust);
+  const ahead = SUBMARINE.dragCoefficient * asked * Math.hypot(asked, vy) + (mass * (asked - sign * u)) / HELM.speedTime;
+  // Along the hull: a pitched hull's push has cos(angle) of it ahead (at most 60 degrees counted).
+  return sign * clamp(ahead / Math.max(0.5, Math.cos(angle)), 0, Math.abs(t) * SUBMARINE.maxThrust);
 }
 
 /**
@@ -502,7 +508,7 @@ export function steer(world: PhysicsWorld, handles: SubmarineHandles, input: Hel
   const ux = c.Velocity.x[e]! - current;
   const along = keep || (input.ahead && !input.astern && ux >= 0) || (input.astern && !input.ahead && ux <= 0);
   const brakeForce = along ? 0 : coastBrake(mass, ux, state.throttle, input.astern && !input.ahead);
-  const push = screwPush(mass, u, state.throttle);
+  const push = screwPush(mass, ux, state.throttle, vy, angle);
   setBodyThrust(world, e, [push + brakeForce * Math.cos(angle), -brakeForce * Math.sin(angle)]);
 }
 
