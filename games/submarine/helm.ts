@@ -282,20 +282,22 @@ export function screwPush(mass: number, u: number, throttle: number, vy = 0, ang
 }
 
 /**
- * The share of full Dive / Rise (`HelmInput.heave`) a Dive or Rise key asks for at rest: a steady 0.6
- * (6 m/s down, 4.8 m/s up), from the first moment it is held, so the depth gone grows in step with
- * the time held (from a hover about 5 m for 1 s, 12 m for 2 s, 24 m for 4 s) and a short tap still
- * moves the depth order by most of a metre. (A key that asked for the full 10 m/s at once would take
- * the boat 11 m in 1.5 s; one that ramped up from a tenth would make the depth grow with the square
- * of the time.)
+ * The share of full Dive / Rise (`HelmInput.heave`) a Dive or Rise key asks for at rest: a steady 0.5
+ * (5 m/s down, 4 m/s up), from the first moment it is held, so the depth gone grows in step with
+ * the time held (from a hover about 4.6 m for 1 s, 9.8 m for 2 s, 19.8 m for 4 s) and a short tap
+ * still moves the depth order by most of a metre. The thrusters' 5.5 m/s^2 take the boat to 90 % of
+ * it in 0.9 s, and let go it runs on 2.2 m and stops within 1.1 s (at 6 m/s: 1.05 s, 3.2 m and
+ * 1.4 s, which strangers read as sluggish and then overshooting). (A key that asked for the full
+ * 10 m/s at once would take the boat 11 m in 1.5 s; one that ramped up from a tenth would make the
+ * depth grow with the square of the time.)
  * Under way the key asks for more (`KEY_HEAVE_SHARE_FAST`). The on-screen stick asks for as much as it
  * is pushed, up to what a key asks for (the page's heldInput), so the two dive alike.
  */
-export const KEY_HEAVE_SHARE = 0.6;
+export const KEY_HEAVE_SHARE = 0.5;
 
 /**
  * The share a Dive or Rise key asks for at `KEY_HEAVE_FULL_SPEED` ahead or faster: 0.8 (8 m/s down).
- * At full ahead a boat diving at the rest share's 6 m/s runs 18 m ahead for 5 m down in 1.5 s, a dive
+ * At full ahead a boat diving at 6 m/s ran 18 m ahead for 5 m down in 1.5 s, a dive
  * slow to answer. (All of it, 10 m/s, takes a pilot on the keys into more mines and seabed slopes:
  * scripts/submarine-pilot.mjs.)
  */
