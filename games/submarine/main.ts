@@ -889,14 +889,17 @@ pageLayout().stage.append(currentNoteEl);
 const currentSeen = { shown: Number.NaN };
 /**
  * Brings up the current's note at game time `t` (s) the first time the water at the hull, `u` m/s,
- * runs at CURRENT_NOTE_SPEED or more once the run has started, and keeps it up CURRENT_NOTE_LIFE s.
+ * runs at CURRENT_NOTE_SPEED or more once the run has started, and keeps it up CURRENT_NOTE_LIFE s,
+ * telling the water at the hull as it is now: the same figure as the status line's "current ▶1.5 m/s".
  */
 function showCurrentNote(t: number, u: number): void {
-  if (Number.isNaN(currentSeen.shown) && !state.over && Number.isFinite(state.startedAt) && Math.abs(u) >= CURRENT_NOTE_SPEED) {
+  if (Number.isNaN(currentSeen.shown) && !state.over && Number.isFinite(state.startedAt) && Math.abs(u) >= CURRENT_NOTE_SPEED)
     currentSeen.shown = t;
-    currentNoteEl.textContent = currentNote(u);
-  }
   const display = !state.over && t - currentSeen.shown < CURRENT_NOTE_LIFE ? 'block' : 'none';
+  if (display === 'block') {
+    const text = currentNote(u);
+    if (currentNoteEl.textContent !== text) currentNoteEl.textContent = text;
+  }
   if (currentNoteEl.style.display !== display) currentNoteEl.style.display = display;
 }
 /**
@@ -1115,11 +1118,15 @@ const PAUSE_BAND = 64;
 const touch = isTouchDevice();
 /** Whether the pause overlay showed in the last frame drawn by drawPause. */
 let pauseShown = false;
+/** The pause band as last drawn: x, y, width, height, px (zeros while hidden). */
+const pauseBandBox = [0, 0, 0, 0];
 /**
  * Shows or hides the pause overlay over a `W` x `H` px scene, on top of everything drawn on the stage:
  * its words on a band at the bottom edge, or at the top edge while the boat (at `boatY` px from the
  * top) would be under the bottom band, so the band stays put as the boat dives (it moved between
- * the edges as the boat crossed the middle of the scene).
+ * the edges as the boat crossed the middle of the scene). The band keeps clear of the cards over the
+ * scene's edges (the first-time hint, the touch hint, the current's note) and, where the other edge
+ * allows, of the target's label.
  * The frame where it comes or goes is drawn whatever the frame pacer says: on a busy GPU the pacer
  * skips most frames, and a paused game draws nothing new that would make up for a skipped one.
  */
@@ -1132,22 +1139,32 @@ function drawPause(W: number, H: number, boatY: number): void {
   // Pools of labels are added to the stage as they are needed: kept under the overlay.
   if (on && app.stage.children[app.stage.children.length - 1] !== pause.container) app.stage.addChild(pause.container);
   pause.draw(on, W, H, touch);
+  pauseBandBox.fill(0);
   if (on) {
-    // Clear of the cards over the scene's edges (the first-time hint at the top, the touch hint at
-    // the bottom) while they show.
+    // Clear of the cards over the scene's edges (the first-time hint at the top, the touch hint and
+    // the current's note at the bottom) while they show.
     const scene = app.canvas.getBoundingClientRect();
     let upper = 0,
       lower = H;
-    for (const card of document.querySelectorAll<HTMLElement>('[data-hud="glow-hint"], [data-hud="touch-hint"]')) {
+    for (const card of document.querySelectorAll<HTMLElement>(
+      '[data-hud="glow-hint"], [data-hud="touch-hint"], [data-hud="current-note"]',
+    )) {
       const r = card.getBoundingClientRect();
       if (r.height === 0) continue;
       if (r.top - scene.top < H / 2) upper = Math.max(upper, r.bottom - scene.top + 4);
       else lower = Math.min(lower, r.top - scene.top - 4);
     }
-    // The hull (up to 24 px high at the closest zoom) and a margin clear of the bottom band.
-    const top = boatY < lower - PAUSE_BAND - 40 ? lower - PAUSE_BAND : upper;
+    // The hull (up to 24 px high at the closest zoom) and a margin clear of the bottom band; the
+    // bottom edge first, the top one if the bottom band would cover the target's label and the top
+    // one covers neither it nor the hull.
+    const [, ly = 0, , lh = 0] = aim.label;
+    const onLabel = (y: number) => pointer.visible && ly < y + PAUSE_BAND && y < ly + lh;
+    const onHull = (y: number) => boatY > y - 40 && boatY < y + PAUSE_BAND + 40;
+    const bottom = lower - PAUSE_BAND;
+    const top = boatY < bottom - 40 && !(onLabel(bottom) && !onLabel(upper) && !onHull(upper)) ? bottom : upper;
     pauseBand.clear().rect(0, top, W, PAUSE_BAND).fill({ color: 0x050a14, alpha: 0.6 });
     pause.words.position.set(W / 2, top + PAUSE_BAND / 2);
+    pauseBandBox.splice(0, 4, 0, top, W, PAUSE_BAND);
   }
 }
 /** The warning's words for each side to pass the mine on (placeMineTag adds how far ahead the mine is: "MINE 40 m"). */
@@ -2853,7 +2870,7 @@ function draw(): void {
   // The clock turns red once par has passed.
   goal.style.color = !state.over && state.time > state.par ? '#ff9e8a' : '#ffe066';
   // The speed is over the ground (the hull's own velocity); the water's, where it flows, beside it
-  // ("current ◀2.4"), so a boat held back by the current is seen to be, not only felt.
+  // ("current ◀2.4 m/s", as the current's note tells it), so a boat held back by the current is seen to be, not only felt.
   const water = currentMark(currentAt(params.level, c.Position.y[e]!));
   readoutText.textContent = compact
     ? `${Math.max(0, depth).toFixed(0)}${ordered.replace(/ /g, '')} m ${speedMark(c.Velocity.x[e]!)}${water ? ` ${water.replace('current ', '≋')}` : ''}${stopped ? ' · seabed' : ''} · ${state.score} · `
@@ -2976,8 +2993,8 @@ shell.expose({
     stickInput.held = x !== 0 || y !== 0;
     timeControls(performance.now());
   },
-  /** Whether the pause overlay shows, and its words. */
-  pauseOverlay: () => ({ visible: pause.visible, text: pause.text }),
+  /** Whether the pause overlay shows, its words and its band's box (x, y, width, height, px; zeros while hidden). */
+  pauseOverlay: () => ({ visible: pause.visible, text: pause.text, band: [...pauseBandBox] }),
   /** The end card's text ('' while the run goes on). */
   endText: (): string => (endCard.style.display === 'none' ? '' : (endCard.textContent ?? '')),
   /** Sets the screw's throttle directly, in [-HELM.asternShare, 1] (the helm sets the tanks and thrusters each step). */
