@@ -288,12 +288,30 @@ const LEAD_SHARE = 0.6;
 /** The look-ahead eases toward its target with this time constant, s of game time. */
 const LEAD_EASE = 0.8;
 /**
- * On a portrait view (narrower than tall) the framing camera shows at least this much sea across,
- * m: a 390 px phone shows 105 m (3.7 px/m, the hull 45 px long), so the target, 85 to 130 m on
- * along a leg, is in view for most of it instead of off screen. A wider view than tall is not
- * limited by it (the desktop's framing is unchanged).
+ * On a portrait view (narrower than tall) under way the framing camera shows at least this much sea
+ * across, m: a 390 px phone 80 m (4.9 px/m, the 12 m hull 59 px long), so with the look-ahead over
+ * 40 m of the way ahead of the bow is in view. A wider view than tall is not limited by it (the
+ * desktop's framing is unchanged).
  */
-const PORTRAIT_MIN_WIDTH = 105;
+const PORTRAIT_MIN_WIDTH = 80;
+/**
+ * The same at rest, m: a 390 px phone 60 m (6.5 px/m, the hull 78 px long) once the target is near
+ * enough to be framed that close; between rest and `PORTRAIT_SPEED` it eases from this to
+ * `PORTRAIT_MIN_WIDTH`. (105 m across at any speed made the hull 42 to 45 px long: hard to see.)
+ */
+const PORTRAIT_REST_WIDTH = 60;
+/**
+ * The least zoom of a portrait view under way, px/m: 4.5 (the hull 54 px long). At rest it is
+ * `FRAME_MIN_ZOOM` (3.5), so a target up to about 65 m away is framed while the pilot sets off (the
+ * first one at the start); between rest and `PORTRAIT_SPEED` it eases from one to the other. Under way
+ * a target further than about 50 m is shown by the edge arrow until it comes into view.
+ */
+const PORTRAIT_MIN_ZOOM_UNDER_WAY = 4.5;
+/**
+ * The speed ahead, m/s, from which a portrait view counts as fully under way for its framing (above).
+ * Backing does not count: a pilot backs onto a target behind, which the view at rest's zoom keeps framed.
+ */
+const PORTRAIT_SPEED = 4;
 /**
  * The look-ahead's share of the way to the framing margin (`LEAD_SHARE`) on a portrait view, and
  * there the most the view's centre leads the hull even toward a target far ahead: 0.55, so under
@@ -2139,11 +2157,15 @@ function draw(): void {
     (W - 2 * FRAME_MARGIN) / Math.max(1e-6, Math.abs(fx - hxw) + SUBMARINE.length),
     (H - 2 * FRAME_MARGIN) / Math.max(1e-6, Math.abs(fy - hyw) + SUBMARINE.length),
   );
-  // A portrait view is narrow: it zooms out to PORTRAIT_MIN_WIDTH m across at least and leads
-  // further, so the boat sits nearer the trailing edge with more of the way ahead in view.
+  // A portrait view is narrow: it shows PORTRAIT_REST_WIDTH m across at least at rest, easing to
+  // PORTRAIT_MIN_WIDTH under way, and leads further, so the boat sits nearer the trailing edge with
+  // more of the way ahead in view. Under way it zooms out no further than PORTRAIT_MIN_ZOOM_UNDER_WAY
+  // (the hull larger), at rest to FRAME_MIN_ZOOM, so a target further off is framed.
   const portrait = W < H;
-  const widest = portrait ? W / PORTRAIT_MIN_WIDTH : Number.POSITIVE_INFINITY;
-  const target = Math.max(Math.min(FRAME_MIN_ZOOM, params.pixelsPerMeter), Math.min(fit, widest));
+  const going = portrait ? Math.min(1, Math.max(0, c.Velocity.x[e]! / PORTRAIT_SPEED)) : 0;
+  const widest = portrait ? W / (PORTRAIT_REST_WIDTH + (PORTRAIT_MIN_WIDTH - PORTRAIT_REST_WIDTH) * going) : Number.POSITIVE_INFINITY;
+  const least = FRAME_MIN_ZOOM + (PORTRAIT_MIN_ZOOM_UNDER_WAY - FRAME_MIN_ZOOM) * going;
+  const target = Math.max(Math.min(least, params.pixelsPerMeter), Math.min(fit, widest));
   const leadShare = portrait ? PORTRAIT_LEAD_SHARE : LEAD_SHARE;
   // Eased (a new beacon or a collected one does not make the view jump).
   zoom = Number.isFinite(zoom) ? zoom + (target - zoom) * 0.1 : target;
