@@ -70,6 +70,7 @@ import {
   parTime,
   touchesMine,
 } from './mines';
+import { pauseBandTop } from './pause-band';
 import { createHeaveTiming, createPressTiming, releasedOrder } from './release';
 import { drawFish } from './sea-life';
 import { type BedAhead, bedAhead, DIVE_STOPPED_WORD, helmWord, seabedInput, touchSeabed } from './seabed';
@@ -1143,8 +1144,8 @@ const pauseBandBox = [0, 0, 0, 0];
  * its words on a band at the bottom edge, or at the top edge while the boat (at `boatY` px from the
  * top) would be under the bottom band, so the band stays put as the boat dives (it moved between
  * the edges as the boat crossed the middle of the scene). The band keeps clear of the cards over the
- * scene's edges (the first-time hint, the touch hint, the current's note) and, where the other edge
- * allows, of the target's label.
+ * scene's edges (the first-time hint, the touch hint, the current's note) and, where there is room
+ * clear of the hull, of the target's label.
  * The frame where it comes or goes is drawn whatever the frame pacer says: on a busy GPU the pacer
  * skips most frames, and a paused game draws nothing new that would make up for a skipped one.
  */
@@ -1172,14 +1173,8 @@ function drawPause(W: number, H: number, boatY: number): void {
       if (r.top - scene.top < H / 2) upper = Math.max(upper, r.bottom - scene.top + 4);
       else lower = Math.min(lower, r.top - scene.top - 4);
     }
-    // The hull (up to 24 px high at the closest zoom) and a margin clear of the bottom band; the
-    // bottom edge first, the top one if the bottom band would cover the target's label and the top
-    // one covers neither it nor the hull.
-    const [, ly = 0, , lh = 0] = aim.label;
-    const onLabel = (y: number) => pointer.visible && ly < y + PAUSE_BAND && y < ly + lh;
-    const onHull = (y: number) => boatY > y - 40 && boatY < y + PAUSE_BAND + 40;
-    const bottom = lower - PAUSE_BAND;
-    const top = boatY < bottom - 40 && !(onLabel(bottom) && !onLabel(upper) && !onHull(upper)) ? bottom : upper;
+    // The bottom edge, or the top one while the boat is near the bottom, clear of the target's label (./pause-band.ts).
+    const top = pauseBandTop(upper, lower, PAUSE_BAND, boatY, pointer.visible ? [aim.label[1]!, aim.label[3]!] : null);
     pauseBand.clear().rect(0, top, W, PAUSE_BAND).fill({ color: 0x050a14, alpha: 0.6 });
     pause.words.position.set(W / 2, top + PAUSE_BAND / 2);
     pauseBandBox.splice(0, 4, 0, top, W, PAUSE_BAND);
