@@ -121,7 +121,7 @@ function fly(seed, count) {
       keySince = Number.NaN;
       const dy = by - y;
       // On the keys too: Ahead held while the boat is slower than lets it reach the beacon's x as
-      // it reaches its depth (at about 3.5 m/s, the key's 6 m/s less the start, the stop and a margin),
+      // it reaches its depth (at about 3.5 m/s, the key's 5 m/s at rest less the start, the stop and a margin),
       // Astern (the brake) while it is 2 m/s or more faster, else it lets go (and glides, braking).
       const tv = Math.abs(dy) / 3.5 + 3,
         want = Math.max(3, Math.max(0, bx - x) / tv),

@@ -128,20 +128,22 @@ export const CURRENT_NOTE_SPEED = 0.8;
 export const CURRENT_NOTE_LIFE = 6;
 
 /**
- * The current for the status line: "current ◀2.4" (m/s, a tenth; the arrow the way the water flows,
- * ▶ the way the course runs), '' under `CURRENT_SHOWN`. `u`: the water's speed, m/s.
+ * The current for the status line: "current ◀2.4 m/s" (a tenth; the arrow the way the water flows,
+ * ▶ the way the course runs), '' under `CURRENT_SHOWN`: the same figure and unit as `currentNote`
+ * gives for the same water. `u`: the water's speed at the boat, m/s.
  * @throws RangeError when `u` is not finite.
  */
 export function currentMark(u: number): string {
   if (!Number.isFinite(u)) throw new RangeError(`currentMark: u must be finite m/s, got ${u}`);
   if (Math.abs(u) < CURRENT_SHOWN) return '';
-  return `current ${u > 0 ? '▶' : '◀'}${Math.abs(u).toFixed(1)}`;
+  return `current ${u > 0 ? '▶' : '◀'}${Math.abs(u).toFixed(1)} m/s`;
 }
 
 /**
  * The note told the first time the current pushes the boat (the water at `u` m/s, |u| at least
- * `CURRENT_NOTE_SPEED`): which way it carries the boat, how fast, and that the speed shown is over
- * the ground. `u`: the water's speed, m/s (positive: the way the course runs).
+ * `CURRENT_NOTE_SPEED`; the page keeps it up a while, told afresh as the water at the boat changes):
+ * which way it carries the boat, how fast (the same figure and unit as `currentMark`), and that the
+ * speed shown is over the ground. `u`: the water's speed at the boat, m/s (positive: the way the course runs).
  * @throws RangeError when `u` is not finite.
  */
 export function currentNote(u: number): string {

@@ -70,6 +70,7 @@ import {
   parTime,
   touchesMine,
 } from './mines';
+import { pauseBandTop } from './pause-band';
 import { createHeaveTiming, createPressTiming, releasedOrder } from './release';
 import { drawFish } from './sea-life';
 import { type BedAhead, bedAhead, DIVE_STOPPED_WORD, helmWord, seabedInput, touchSeabed } from './seabed';
@@ -288,12 +289,30 @@ const LEAD_SHARE = 0.6;
 /** The look-ahead eases toward its target with this time constant, s of game time. */
 const LEAD_EASE = 0.8;
 /**
- * On a portrait view (narrower than tall) the framing camera shows at least this much sea across,
- * m: a 390 px phone shows 105 m (3.7 px/m, the hull 45 px long), so the target, 85 to 130 m on
- * along a leg, is in view for most of it instead of off screen. A wider view than tall is not
- * limited by it (the desktop's framing is unchanged).
+ * On a portrait view (narrower than tall) under way the framing camera shows at least this much sea
+ * across, m: a 390 px phone 80 m (4.9 px/m, the 12 m hull 59 px long), so with the look-ahead over
+ * 40 m of the way ahead of the bow is in view. A wider view than tall is not limited by it (the
+ * desktop's framing is unchanged).
  */
-const PORTRAIT_MIN_WIDTH = 105;
+const PORTRAIT_MIN_WIDTH = 80;
+/**
+ * The same at rest, m: a 390 px phone 60 m (6.5 px/m, the hull 78 px long) once the target is near
+ * enough to be framed that close; between rest and `PORTRAIT_SPEED` it eases from this to
+ * `PORTRAIT_MIN_WIDTH`. (105 m across at any speed made the hull 42 to 45 px long: hard to see.)
+ */
+const PORTRAIT_REST_WIDTH = 60;
+/**
+ * The least zoom of a portrait view under way, px/m: 4.5 (the hull 54 px long). At rest it is
+ * `FRAME_MIN_ZOOM` (3.5), so a target up to about 65 m away is framed while the pilot sets off (the
+ * first one at the start); between rest and `PORTRAIT_SPEED` it eases from one to the other. Under way
+ * a target further than about 50 m is shown by the edge arrow until it comes into view.
+ */
+const PORTRAIT_MIN_ZOOM_UNDER_WAY = 4.5;
+/**
+ * The speed ahead, m/s, from which a portrait view counts as fully under way for its framing (above).
+ * Backing does not count: a pilot backs onto a target behind, which the view at rest's zoom keeps framed.
+ */
+const PORTRAIT_SPEED = 4;
 /**
  * The look-ahead's share of the way to the framing margin (`LEAD_SHARE`) on a portrait view, and
  * there the most the view's centre leads the hull even toward a target far ahead: 0.55, so under
@@ -889,14 +908,17 @@ pageLayout().stage.append(currentNoteEl);
 const currentSeen = { shown: Number.NaN };
 /**
  * Brings up the current's note at game time `t` (s) the first time the water at the hull, `u` m/s,
- * runs at CURRENT_NOTE_SPEED or more once the run has started, and keeps it up CURRENT_NOTE_LIFE s.
+ * runs at CURRENT_NOTE_SPEED or more once the run has started, and keeps it up CURRENT_NOTE_LIFE s,
+ * telling the water at the hull as it is now: the same figure as the status line's "current ▶1.5 m/s".
  */
 function showCurrentNote(t: number, u: number): void {
-  if (Number.isNaN(currentSeen.shown) && !state.over && Number.isFinite(state.startedAt) && Math.abs(u) >= CURRENT_NOTE_SPEED) {
+  if (Number.isNaN(currentSeen.shown) && !state.over && Number.isFinite(state.startedAt) && Math.abs(u) >= CURRENT_NOTE_SPEED)
     currentSeen.shown = t;
-    currentNoteEl.textContent = currentNote(u);
-  }
   const display = !state.over && t - currentSeen.shown < CURRENT_NOTE_LIFE ? 'block' : 'none';
+  if (display === 'block') {
+    const text = currentNote(u);
+    if (currentNoteEl.textContent !== text) currentNoteEl.textContent = text;
+  }
   if (currentNoteEl.style.display !== display) currentNoteEl.style.display = display;
 }
 /**
@@ -1115,11 +1137,15 @@ const PAUSE_BAND = 64;
 const touch = isTouchDevice();
 /** Whether the pause overlay showed in the last frame drawn by drawPause. */
 let pauseShown = false;
+/** The pause band as last drawn: x, y, width, height, px (zeros while hidden). */
+const pauseBandBox = [0, 0, 0, 0];
 /**
  * Shows or hides the pause overlay over a `W` x `H` px scene, on top of everything drawn on the stage:
  * its words on a band at the bottom edge, or at the top edge while the boat (at `boatY` px from the
  * top) would be under the bottom band, so the band stays put as the boat dives (it moved between
- * the edges as the boat crossed the middle of the scene).
+ * the edges as the boat crossed the middle of the scene). The band keeps clear of the cards over the
+ * scene's edges (the first-time hint, the touch hint, the current's note) and, where there is room
+ * clear of the hull, of the target's label.
  * The frame where it comes or goes is drawn whatever the frame pacer says: on a busy GPU the pacer
  * skips most frames, and a paused game draws nothing new that would make up for a skipped one.
  */
@@ -1132,22 +1158,26 @@ function drawPause(W: number, H: number, boatY: number): void {
   // Pools of labels are added to the stage as they are needed: kept under the overlay.
   if (on && app.stage.children[app.stage.children.length - 1] !== pause.container) app.stage.addChild(pause.container);
   pause.draw(on, W, H, touch);
+  pauseBandBox.fill(0);
   if (on) {
-    // Clear of the cards over the scene's edges (the first-time hint at the top, the touch hint at
-    // the bottom) while they show.
+    // Clear of the cards over the scene's edges (the first-time hint at the top, the touch hint and
+    // the current's note at the bottom) while they show.
     const scene = app.canvas.getBoundingClientRect();
     let upper = 0,
       lower = H;
-    for (const card of document.querySelectorAll<HTMLElement>('[data-hud="glow-hint"], [data-hud="touch-hint"]')) {
+    for (const card of document.querySelectorAll<HTMLElement>(
+      '[data-hud="glow-hint"], [data-hud="touch-hint"], [data-hud="current-note"]',
+    )) {
       const r = card.getBoundingClientRect();
       if (r.height === 0) continue;
       if (r.top - scene.top < H / 2) upper = Math.max(upper, r.bottom - scene.top + 4);
       else lower = Math.min(lower, r.top - scene.top - 4);
     }
-    // The hull (up to 24 px high at the closest zoom) and a margin clear of the bottom band.
-    const top = boatY < lower - PAUSE_BAND - 40 ? lower - PAUSE_BAND : upper;
+    // The bottom edge, or the top one while the boat is near the bottom, clear of the target's label (./pause-band.ts).
+    const top = pauseBandTop(upper, lower, PAUSE_BAND, boatY, pointer.visible ? [aim.label[1]!, aim.label[3]!] : null);
     pauseBand.clear().rect(0, top, W, PAUSE_BAND).fill({ color: 0x050a14, alpha: 0.6 });
     pause.words.position.set(W / 2, top + PAUSE_BAND / 2);
+    pauseBandBox.splice(0, 4, 0, top, W, PAUSE_BAND);
   }
 }
 /** The warning's words for each side to pass the mine on (placeMineTag adds how far ahead the mine is: "MINE 40 m"). */
@@ -2122,11 +2152,15 @@ function draw(): void {
     (W - 2 * FRAME_MARGIN) / Math.max(1e-6, Math.abs(fx - hxw) + SUBMARINE.length),
     (H - 2 * FRAME_MARGIN) / Math.max(1e-6, Math.abs(fy - hyw) + SUBMARINE.length),
   );
-  // A portrait view is narrow: it zooms out to PORTRAIT_MIN_WIDTH m across at least and leads
-  // further, so the boat sits nearer the trailing edge with more of the way ahead in view.
+  // A portrait view is narrow: it shows PORTRAIT_REST_WIDTH m across at least at rest, easing to
+  // PORTRAIT_MIN_WIDTH under way, and leads further, so the boat sits nearer the trailing edge with
+  // more of the way ahead in view. Under way it zooms out no further than PORTRAIT_MIN_ZOOM_UNDER_WAY
+  // (the hull larger), at rest to FRAME_MIN_ZOOM, so a target further off is framed.
   const portrait = W < H;
-  const widest = portrait ? W / PORTRAIT_MIN_WIDTH : Number.POSITIVE_INFINITY;
-  const target = Math.max(Math.min(FRAME_MIN_ZOOM, params.pixelsPerMeter), Math.min(fit, widest));
+  const going = portrait ? Math.min(1, Math.max(0, c.Velocity.x[e]! / PORTRAIT_SPEED)) : 0;
+  const widest = portrait ? W / (PORTRAIT_REST_WIDTH + (PORTRAIT_MIN_WIDTH - PORTRAIT_REST_WIDTH) * going) : Number.POSITIVE_INFINITY;
+  const least = FRAME_MIN_ZOOM + (PORTRAIT_MIN_ZOOM_UNDER_WAY - FRAME_MIN_ZOOM) * going;
+  const target = Math.max(Math.min(least, params.pixelsPerMeter), Math.min(fit, widest));
   const leadShare = portrait ? PORTRAIT_LEAD_SHARE : LEAD_SHARE;
   // Eased (a new beacon or a collected one does not make the view jump).
   zoom = Number.isFinite(zoom) ? zoom + (target - zoom) * 0.1 : target;
@@ -2853,7 +2887,7 @@ function draw(): void {
   // The clock turns red once par has passed.
   goal.style.color = !state.over && state.time > state.par ? '#ff9e8a' : '#ffe066';
   // The speed is over the ground (the hull's own velocity); the water's, where it flows, beside it
-  // ("current ◀2.4"), so a boat held back by the current is seen to be, not only felt.
+  // ("current ◀2.4 m/s", as the current's note tells it), so a boat held back by the current is seen to be, not only felt.
   const water = currentMark(currentAt(params.level, c.Position.y[e]!));
   readoutText.textContent = compact
     ? `${Math.max(0, depth).toFixed(0)}${ordered.replace(/ /g, '')} m ${speedMark(c.Velocity.x[e]!)}${water ? ` ${water.replace('current ', '≋')}` : ''}${stopped ? ' · seabed' : ''} · ${state.score} · `
@@ -2976,8 +3010,8 @@ shell.expose({
     stickInput.held = x !== 0 || y !== 0;
     timeControls(performance.now());
   },
-  /** Whether the pause overlay shows, and its words. */
-  pauseOverlay: () => ({ visible: pause.visible, text: pause.text }),
+  /** Whether the pause overlay shows, its words and its band's box (x, y, width, height, px; zeros while hidden). */
+  pauseOverlay: () => ({ visible: pause.visible, text: pause.text, band: [...pauseBandBox] }),
   /** The end card's text ('' while the run goes on). */
   endText: (): string => (endCard.style.display === 'none' ? '' : (endCard.textContent ?? '')),
   /** Sets the screw's throttle directly, in [-HELM.asternShare, 1] (the helm sets the tanks and thrusters each step). */

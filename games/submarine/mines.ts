@@ -296,9 +296,9 @@ export interface MineAhead {
  * still make it (or can make neither) and it runs into no other mine, so the warning does not flip
  * as the hull turns to it; `heaving`: Dive or Rise is held (default false); `heave`: the share of
  * the helm's dive or climb speed that the held Dive or Rise asks for, in (0, 1] (default 1; a key
- * asks for ./helm.ts keyHeaveShare, 0.6 at rest to 0.8 at full speed), so the warning foresees the
+ * asks for ./helm.ts keyHeaveShare, 0.5 at rest to 0.8 at full speed), so the warning foresees the
  * dive the boat really makes: a course that took a key's dive at the full 10 m/s would run under a
- * mine that the boat, diving at 6 m/s, meets, and the warning would come only at the mine.
+ * mine that the boat, diving at 5 to 8 m/s, meets, and the warning would come only at the mine.
  * @throws RangeError when x, y, vx or vy is not finite, `horizon` is not positive or `heave` is not in (0, 1].
  */
 export function mineAhead(

@@ -133,7 +133,36 @@ describe('submarine keys (desktop)', () => {
     const told = await read();
     expect(told.note).toBe(true);
     expect(told.noteText).toMatch(/Current ▶ with you, 1\.5 m\/s/);
-    expect(told.status).toMatch(/ahead [\d.]+ m\/s over ground, current ▶1\.5/);
+    expect(told.status).toMatch(/ahead [\d.]+ m\/s over ground, current ▶1\.5 m\/s/);
+    // Issue 34: the note kept the figure of its first moment ("0.8 m/s") while the status line went
+    // on to "current ▶1.5". Put 10 m deeper (1.5 sin(pi 20 / 35 + 0.6) = 1.02 m/s there), both tell
+    // the water at the boat now, in m/s.
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as Sub;
+      w.world.components.Position.y[w.hull()] = -20;
+      w.world.components.Velocity.y[w.hull()] = 0;
+      w.state.holdY = -20;
+    });
+    await frames(g.page, 0.1);
+    const later = await read();
+    expect(later.note).toBe(true);
+    const figure = /current ▶([\d.]+ m\/s)/.exec(later.status)?.[1];
+    expect(figure).toBe('1.0 m/s');
+    expect(later.noteText).toContain(`with you, ${figure}`);
+    // Paused with the note up, the pause band keeps clear of it (it lay under the note).
+    await frames(g.page, 1 / 60, true);
+    const shown = await g.page.evaluate(() => {
+      const note = (document.querySelector('[data-hud="current-note"]') as HTMLElement).getBoundingClientRect(),
+        scene = (document.querySelector('canvas') as HTMLCanvasElement).getBoundingClientRect();
+      const p = (window.game as unknown as { pauseOverlay(): { visible: boolean; band: number[] } }).pauseOverlay();
+      return { visible: p.visible, band: p.band, note: [note.left - scene.left, note.top - scene.top, note.width, note.height] };
+    });
+    expect(shown.visible).toBe(true);
+    const [, by = 0, , bh = 0] = shown.band,
+      [, ny = 0, , nh = 0] = shown.note;
+    expect(bh).toBeGreaterThan(0);
+    expect(by + bh <= ny || ny + nh <= by, `band ${shown.band} note ${shown.note}`).toBe(true);
+    await frames(g.page, 0);
     await g.page.evaluate(() => {
       const w = window.game as unknown as Sub & { params: { level: number } };
       w.params.level = 1;

@@ -86,8 +86,11 @@ describe('submarine currents', () => {
   });
 
   it('the current is named by the way it flows and its speed, and not at all where it is slack', () => {
-    expect(currentMark(-2.36)).toBe('current ◀2.4');
-    expect(currentMark(1.5)).toBe('current ▶1.5');
+    expect(currentMark(-2.36)).toBe('current ◀2.4 m/s');
+    expect(currentMark(1.5)).toBe('current ▶1.5 m/s');
+    // Issue 34: the status line read "current ▶1.5" beside a note of "0.8 m/s": the same water now
+    // gives the same figure and unit in both.
+    for (const u of [-2.36, -0.81, 0.84, 1.5]) expect(currentNote(u)).toContain(currentMark(u).slice('current ▶'.length));
     expect(currentMark(CURRENT_SHOWN * 0.9)).toBe('');
     expect(currentNote(-2.4)).toMatch(/against you, 2\.4 m\/s/);
     expect(currentNote(1.5)).toMatch(/with you, 1\.5 m\/s/);
