@@ -315,15 +315,15 @@ const NONE: readonly number[] = [];
 /**
  * The bodies that may fall asleep this step, every collider alike: the awake dynamic balls, then the
  * awake dynamic bodies carrying a 2D shape and no ball, then (in 3D) those carrying a 3D shape and no
- * ball. Returns the balls' query itself when the world has no shapes; otherwise a view of a reused
- * array (valid until the next call).
+ * ball. Returns a view of a reused array (valid until the next call), a Uint32Array in every world:
+ * were it the balls' query itself in a world without shapes, sleepSystem compiled against one kind
+ * of list (a warm-up scene's shapes) would be thrown away at its first step in a world of the other.
  */
-function sleepCandidates(world: PhysicsWorld, terms: SleepTerms): ArrayLike<number> {
+function sleepCandidates(world: PhysicsWorld, terms: SleepTerms): Uint32Array {
   const balls = query(world, terms.balls);
   const flat = world.collision.shapes.active;
   const s = world.dimensions === 3 ? shapes3DOf(world) : undefined;
   const solid = s?.active === true;
-  if (!flat && !solid) return balls;
   const shaped: ArrayLike<number> = flat ? query(world, terms.shaped) : NONE,
     shaped3D: ArrayLike<number> = solid ? query(world, terms.shaped3D) : NONE;
   const n = balls.length + shaped.length + shaped3D.length;
