@@ -466,8 +466,8 @@ function letGo(): void {
 
 /**
  * Each arrow's last press: the world's step count and performance.now() then, ms. A press thrusts for
- * as long as it was held by the wall clock, at least a tap's TAP_STEPS, from the step it began
- * (./press-timing.ts `releaseStep`), so a finger's tap (down and up between two steps) still thrusts,
+ * as long as it was held by the wall clock, a short press a little longer (a tap TAP_STEPS), from the
+ * step it began (./press-timing.ts `releaseStep`), so a finger's tap (down and up between two steps) still thrusts,
  * and a press pushes the ship as much on a loaded machine as on a fast one.
  */
 const pressedAt = new Map<Arrow, { step: number; ms: number }>();

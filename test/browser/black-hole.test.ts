@@ -881,7 +881,7 @@ describe.each([
     expect(p.errors).toEqual([]);
   });
 
-  it('a tap thrusts exactly 15 steps, its arrow unlit once let go; paused, arrows do not redraw the path; Path and Replay (F, V) work; the legend names real controls', async () => {
+  it('a tap thrusts exactly 13 steps, its arrow unlit once let go; paused, arrows do not redraw the path; Path and Replay (F, V) work; the legend names real controls', async () => {
     const p = page();
     type Bh = {
       paused: boolean;
@@ -898,8 +898,8 @@ describe.each([
     const legend = await p.page.locator('.bp-legend').textContent();
     expect(legend).not.toContain('big button');
     if (touch) expect(legend).toContain('Level ▶ / Continue ↺');
-    // A tap of ↑ (a finger's tap, or a key pressed and let go at once) thrusts for exactly 15 steps
-    // (TAP_STEPS) of the game: the run's recording (V replays it) holds the thrust 'up' and, 15 steps
+    // A tap of ↑ (a finger's tap, or a key pressed and let go at once) thrusts for exactly 13 steps
+    // (TAP_STEPS) of the game: the run's recording (V replays it) holds the thrust 'up' and, 13 steps
     // later, 'none' (a finger's tap thrust for no step at all; a key's for as many steps as the frames
     // between).
     const upBox = (await p.page.getByRole('button', { name: 'thrust up', exact: true }).boundingBox())!;
@@ -932,7 +932,7 @@ describe.each([
       return events.length >= 2 ? events.map((e) => [e.step, e.args[0]]) : null;
     }, null);
     expect(thrusts.map((t) => t[1])).toEqual(['up', 'none']);
-    expect(thrusts[1]![0]! as number, device).toBe((thrusts[0]![0]! as number) + 15);
+    expect(thrusts[1]![0]! as number, device).toBe((thrusts[0]![0]! as number) + 13);
     await p.page.evaluate(() => {
       (window.game as unknown as Bh).paused = true;
     });
