@@ -1480,6 +1480,65 @@ function startSwallow(): void {
   swallow.start = performance.now();
 }
 
+/** The caption at the hole while the ship spirals in ("Swallowed!"), popping up and fading with the swallow. */
+const swallowText = new Text({
+  text: 'Swallowed!',
+  style: { fill: 0xffb070, fontSize: 30, fontFamily: 'sans-serif', fontWeight: 'bold', stroke: { color: 0x000000, width: 5 } },
+});
+swallowText.anchor.set(0.5, 1);
+swallowText.visible = false;
+app.stage.addChild(swallowText);
+
+/**
+ * Draws the swallow at `u` (0 to 1 of SWALLOW_MS), the ship drawn `k` px tall: the ship spirals in
+ * 1.5 turns from at least 2.5 ship heights out (from where it touched the horizon the spiral was
+ * hidden by the hole's glow), stretched along its fall and shrinking to nothing, with a fading trail;
+ * a white flash at the hole, two shock rings spreading from it, and "Swallowed!" popping up over it.
+ */
+function drawSwallow(u: number, k: number): void {
+  const cam = renderer.camera;
+  const hx = cam.toScreenX(swallow.hx),
+    hy = cam.toScreenY(swallow.hy);
+  const d0 = Math.hypot(swallow.dx, swallow.dy) || 1,
+    // Screen px per m of the start offset, widened so the spiral starts 2.5 ship heights out.
+    grow = Math.max(1, (2.5 * k) / cam.toScreenLength(d0));
+  const at = (v: number): [number, number] => {
+    const turn = 3 * Math.PI * v,
+      f = (1 - v) * grow;
+    const ox = f * (swallow.dx * Math.cos(turn) - swallow.dy * Math.sin(turn)),
+      oy = f * (swallow.dx * Math.sin(turn) + swallow.dy * Math.cos(turn));
+    return [cam.toScreenX(swallow.hx + ox), cam.toScreenY(swallow.hy + oy)];
+  };
+  if (u < 0.25) overlay.circle(hx, hy, k * (0.8 + 2 * u)).fill({ color: 0xffffff, alpha: 0.7 * (1 - u / 0.25) });
+  for (const lag of [0, 0.18]) {
+    const w = (u - lag) / 0.8;
+    if (w > 0 && w < 1)
+      overlay.circle(hx, hy, k * (0.6 + 4.5 * w)).stroke({ width: 3, color: lag ? 0xffd27a : 0xff7a2a, alpha: 0.9 * (1 - w) });
+  }
+  // The trail: three fading ships a little behind on the spiral.
+  for (const back of [0.09, 0.06, 0.03]) {
+    const v = Math.max(0, u - back);
+    const [tx, ty] = at(v);
+    overlay.circle(tx, ty, Math.max(1, 0.18 * k * (1 - v))).fill({ color: 0xffb070, alpha: 0.5 * (1 - back / 0.1) * (1 - u) });
+  }
+  const [sx, sy] = at(u);
+  drawShip(sx, sy, k * (1 - u) * (1 + 0.3 * Math.sin(Math.PI * Math.min(1, u * 3))), 12 * Math.PI * u, u < 0.5 ? 0xffd0a0 : 0xff6a3c);
+  // The caption: pops up (scale 1.5 -> 1 in the first fifth), fades in the last quarter; above the
+  // hole, or under it where the field's top is too near.
+  swallowText.visible = true;
+  death.caption = swallowText.text;
+  const pop = u < 0.2 ? 1.5 - 2.5 * u : 1;
+  swallowText.scale.set(pop);
+  swallowText.alpha = u < 0.75 ? 1 : (1 - u) / 0.25;
+  const top = cam.toScreenY(playField.height),
+    gap = 2.2 * k;
+  const above = hy - gap - swallowText.height >= top + 4;
+  swallowText.anchor.set(0.5, above ? 1 : 0);
+  const half = swallowText.width / 2 + 4;
+  const x = Math.max(cam.toScreenX(0) + half, Math.min(cam.toScreenX(playField.width) - half, hx));
+  swallowText.position.set(x, above ? hy - gap : hy + gap);
+}
+
 /** How long a fall's red flash lasts, the shake, and the words over the field, ms. */
 const DEATH_FLASH_MS = 450,
   DEATH_SHAKE_MS = 400,
@@ -1490,9 +1549,10 @@ const DEATH_SHAKE_PX = 10;
 const RESPAWN_MS = 700;
 /**
  * A fall's effect: when it began (performance.now(), ms; -Infinity: none yet), how many have begun,
- * and the strongest flash drawn since the last began (0 to 1: a frame drew it).
+ * the strongest flash drawn since the last began (0 to 1: a frame drew it) and the caption drawn at
+ * the hole since then ('' while none was).
  */
-const death = { start: -Infinity, count: 0, flashPeak: 0 };
+const death = { start: -Infinity, count: 0, flashPeak: 0, caption: '' };
 /** Colours of the words over the field: a fall's (red), a loss off the field's (pale blue: no life lost). */
 const FALL_WORDS = 0xff8c8c,
   LOST_WORDS = 0x9fd3ff;
@@ -1526,6 +1586,7 @@ function startDeath(): void {
   death.start = swallow.active ? swallow.start : performance.now();
   death.count++;
   death.flashPeak = 0;
+  death.caption = '';
   setWaitWords(FALL_WORDS);
 }
 
@@ -1570,7 +1631,7 @@ function drawDeath(): void {
   const age = performance.now() - death.start;
   flashLayer.clear();
   if (age >= 0 && age < DEATH_FLASH_MS) {
-    const a = 0.45 * (1 - age / DEATH_FLASH_MS);
+    const a = 0.5 * (1 - age / DEATH_FLASH_MS);
     death.flashPeak = Math.max(death.flashPeak, a);
     flashLayer
       .rect(cam.toScreenX(0), cam.toScreenY(playField.height), cam.toScreenLength(playField.width), cam.toScreenLength(playField.height))
@@ -1582,7 +1643,8 @@ function drawDeath(): void {
   } else if (app.stage.position.x !== 0 || app.stage.position.y !== 0) app.stage.position.set(0, 0);
   const waits = deathWaits();
   const fresh = age >= 0 && age < DEATH_TEXT_MS && (happening === 'fell' || happening === 'over');
-  deathText.visible = fresh || waits;
+  // Not while the ship spirals in: the caption at the hole says it then (`drawSwallow`).
+  deathText.visible = (fresh || waits) && !swallow.active;
   if (!deathText.visible) return;
   // One message at a time: paused, the words say so in their last line (the pause's own words are
   // hidden, `drawFrame`), in place of how to fly on.
@@ -2216,7 +2278,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   shipPx = k;
   drawDeath();
   // The words of a fall are not drawn over the path's label ("falls in" under "Swallowed!").
-  if (deathText.visible) pathLabel.visible = pathHint.visible = false;
+  if (deathText.visible || swallow.active) pathLabel.visible = pathHint.visible = false;
   // One message at a time: paused over a fall's words (which then say it) or the game-over card, the
   // pause's own words are not drawn (the shade still dims the field).
   drawPauseLine(shell.paused && !deathText.visible && !bh.over);
@@ -2224,20 +2286,12 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   const age = performance.now() - swallow.start;
   if (swallow.active && age > SWALLOW_MS) swallow.active = false;
   if (swallow.active) {
-    // Spiralling in: 1.5 turns, the distance and the size shrinking to nothing.
-    const u = age / SWALLOW_MS,
-      turn = 3 * Math.PI * u,
-      f = 1 - u;
-    const ox = f * (swallow.dx * Math.cos(turn) - swallow.dy * Math.sin(turn)),
-      oy = f * (swallow.dx * Math.sin(turn) + swallow.dy * Math.cos(turn));
-    const hx = cam.toScreenX(swallow.hx),
-      hy = cam.toScreenY(swallow.hy);
-    overlay.circle(hx, hy, k * (0.6 + 1.5 * u)).stroke({ width: 2, color: 0xff7a2a, alpha: f });
-    drawShip(cam.toScreenX(swallow.hx + ox), cam.toScreenY(swallow.hy + oy), k * f, 4 * turn, u < 0.5 ? 0xffd0a0 : 0xff6a3c);
+    drawSwallow(age / SWALLOW_MS, k);
     edgeText.visible = false;
     updateStatus();
     return;
   }
+  swallowText.visible = false;
   lastShip[0] = x;
   lastShip[1] = y;
   // Back at the start after a fall: a ring closes in on the ship, so the eye finds it there.
@@ -2341,13 +2395,15 @@ shell.expose({
   },
   /**
    * The falls' effect: how many have begun, the words of the last one, the strongest red flash
-   * drawn for it (0 to 0.45; 0 until a frame drew it), and whether the last frame showed the words.
+   * drawn for it (0 to 0.5; 0 until a frame drew it), whether the last frame showed the words, and
+   * the caption drawn at the hole while the ship spiralled in ('' until a frame drew it).
    */
-  deathEffect: (): { count: number; text: string; flashPeak: number; shown: boolean } => ({
+  deathEffect: (): { count: number; text: string; flashPeak: number; shown: boolean; caption: string } => ({
     count: death.count,
     text: deathText.text,
     flashPeak: death.flashPeak,
     shown: deathText.visible,
+    caption: death.caption,
   }),
   /** Wall-clock time left of the ready moment after a respawn, ms (no thrust until 0; ./main.ts READY_MS). */
   readyLeft: (): number => (readyEndsAt > 0 ? Math.max(0, readyEndsAt - performance.now()) : 0),

@@ -23,7 +23,7 @@ interface BlackHolePage {
   pathLabel(): string;
   pathShade(): 'warn' | 'clear' | 'open' | '';
   ghostHoles(): boolean;
-  deathEffect(): { count: number; text: string; flashPeak: number; shown: boolean };
+  deathEffect(): { count: number; text: string; flashPeak: number; shown: boolean; caption: string };
   pathPoints(): number;
 }
 
@@ -98,6 +98,9 @@ describe('black hole', () => {
       return d.flashPeak > 0 ? d : null;
     }, null);
     expect(death.count).toBe(1);
+    // While the ship spirals in, a caption at the hole says what happened (the words in the field's
+    // top band, far from where the eye was, were the only words).
+    expect(await g.waitFor(() => (window.game as unknown as BlackHolePage).deathEffect().caption, null)).toBe('Swallowed!');
     // The words stay while the new ship waits parked for the player's thrust, and say so.
     expect(death.text).toMatch(/^Swallowed!\nPractice: no life lost\n(Press|Tap) ↑, ← or → to fly on$/);
     // While the words of the fall show, the path's label is not drawn under them.
