@@ -42,6 +42,7 @@ import {
   numberParam,
   onButtonPress,
   pageLayout,
+  pauseUnderDrawers,
   seedParam,
 } from '@bitphysics/game-kit';
 import { createPauseOverlay, startPixiGame } from '@bitphysics/game-kit/pixi';
@@ -379,6 +380,9 @@ const game = await startPixiGame({
   onFrame: (alpha, world) => drawFrame(alpha, world),
 });
 const { shell, renderer, app } = game;
+// On a small screen the menu and settings drawers lie over the field: the flight waits while one is
+// open, and goes on when it closes (unless the player paused it).
+pauseUnderDrawers(shell, { compactOnly: true });
 shell.onWorldChange(() => {
   // A new world is a new start: the level's title shows again.
   bannerWorld++;
@@ -678,8 +682,9 @@ const style = document.createElement('style');
 style.textContent = `
 .bh-status { text-align: center; font: 13px/1.4 system-ui, sans-serif; color: #e8ecf1; padding: 6px 10px 2px; }
 .bh-status .bh-numbers { font: 600 15px ui-monospace, Menlo, Consolas, monospace; white-space: nowrap; overflow: hidden; }
-.bh-status .bh-message { color: #ffd166; }
-/* On a phone a message wraps to one or two lines: two are kept, so the scene under it does not jump. */
+.bh-status .bh-message { color: #ffd166; min-height: 1.4em; }
+/* On a phone a message wraps to one or two lines (fitMessage picks a form that fits two): two are
+   kept, so the scene under it does not jump. */
 @media (max-width: 600px) { .bh-status .bh-message { min-height: 2.8em; } .bh-status .bh-numbers { font-size: 13px; } }
 .bh-status.over .bh-message { color: #ff8c8c; cursor: pointer; }
 .bh-status.cleared .bh-message { color: #7ee787; cursor: pointer; font-weight: 600; }

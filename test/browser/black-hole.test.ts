@@ -589,6 +589,16 @@ describe.each([
   it('a finger (or the mouse) held on ↑ and slid onto → turns the thrust right; lifting it stops; the ship is drawn at least 26 px; the next-level button leaves the pad and the ship clear and starts level 2; on a phone ↑ held thrusts up and after the game a tap on the scene plays again', async () => {
     const p = await h.openGame('black-hole', { viewport, touch, query: { level: 1 }, ...(touch ? { locale: 'en-US@posix' } : {}) });
     if (touch) await checkPageContract(p, 'black-hole', 'phone');
+    // Where the field stands: it stays there as the status line changes (level 1's opening line took
+    // three lines on a phone, the lines after it two, and the field moved 10 px each time).
+    const field = () =>
+      p.page.evaluate(() => {
+        const m = document.querySelector<HTMLElement>('[data-hud="message"]')!;
+        const lines = m.offsetHeight / Number.parseFloat(getComputedStyle(m).lineHeight);
+        return { top: document.querySelector('canvas')!.getBoundingClientRect().top, lines, text: m.textContent };
+      });
+    const field0 = await field();
+    expect(field0.lines, field0.text ?? '').toBeLessThan(2.5);
     if (touch) {
       // The touch hint at the start lies clear of the ship waiting at the start and of level 1's holes
       // (each with its glow, 3 radii round): at the stage's foot it covered the ship.
@@ -775,6 +785,8 @@ describe.each([
     }, null);
     expect(await p.page.evaluate(() => (window.game as unknown as { level: { spec: { level: number } } }).level.spec.level)).toBe(2);
     expect(wall.e.length).toBeGreaterThan(5);
+    const field2 = await field();
+    expect(field2.top, `${device}: the field's top, level 2 (${field2.text})`).toBeCloseTo(field0.top, 1);
     for (const [left, right, bottom, top] of wall.e) {
       expect(left, `${device}: a hole's left`).toBeGreaterThanOrEqual(0);
       expect(right, `${device}: a hole's right`).toBeLessThanOrEqual(wall.field.width);
@@ -782,10 +794,26 @@ describe.each([
       expect(top).toBeLessThanOrEqual(wall.field.height);
     }
     // The phone's menu drawer is opaque: the level banner over the field does not show through it.
+    // Opened, it pauses the game (it covers the field); closed, the game goes on.
     if (touch) {
+      const paused = () => p.page.evaluate(() => (window.game as unknown as { paused: boolean }).paused);
+      expect(await paused()).toBe(false);
       await p.page.locator('.bp-drawer-button:not(.bp-side-button)').click();
       const bg = await p.page.evaluate(() => getComputedStyle(document.querySelector('.bp-info')!).backgroundColor);
       expect(bg).toBe('rgb(16, 20, 28)');
+      await p.waitFor(() => (window.game as unknown as { paused: boolean }).paused, null);
+      await p.page.locator('.bp-drawer-button:not(.bp-side-button)').click();
+      await p.waitFor(() => !(window.game as unknown as { paused: boolean }).paused, null);
+      // A pause the player made stays when the menu closes.
+      await p.page
+        .getByRole('button', { name: /^pause/i })
+        .first()
+        .click();
+      expect(await paused()).toBe(true);
+      await p.page.locator('.bp-drawer-button:not(.bp-side-button)').click();
+      await p.page.locator('.bp-drawer-button:not(.bp-side-button)').click();
+      await p.frames(2);
+      expect(await paused()).toBe(true);
     }
     expect(p.errors).toEqual([]);
     await p.close();
