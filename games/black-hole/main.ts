@@ -193,14 +193,16 @@ const PATH_STEPS = 180;
 const PAD_PATH_STEPS = 180;
 const path = new Float64Array(2 * (Math.max(PATH_STEPS, PAD_PATH_STEPS) + 1));
 let pathPoints = 0;
+/** Points round each ring left, twice (its halo and halfway in), that the captions keep off (`drawRings`); room for 8 rings. */
+const RING_DOTS = 16;
 /** Room in `dots` for the points that mark the holes for the coach to keep off (`addHoleDots`). */
 const HOLE_DOTS = 600;
 /**
  * Screen points, px, of what a caption must not cover this frame: every path dot drawn (the pad's side
- * paths too) and the ship (x0, y0, x1, y1, ...; `dotCount` of them). The coach and the path's "falls in"
+ * paths too), the rings left and the ship (x0, y0, x1, y1, ...; `dotCount` of them). The coach and the path's "falls in"
  * are placed off them (`placeOffDots`).
  */
-const dots = new Float64Array(2 * (PATH_STEPS + 2 * PAD_PATH_STEPS + 16 + HOLE_DOTS));
+const dots = new Float64Array(2 * (PATH_STEPS + 2 * PAD_PATH_STEPS + 16 + HOLE_DOTS + 8 * (1 + 2 * RING_DOTS)));
 let dotCount = 0;
 /** Adds a point, px, to `dots` (ignored once it is full). */
 function addDot(x: number, y: number): void {
@@ -1157,7 +1159,13 @@ function drawRings(): void {
     const next = i === run.ringsTaken;
     overlay.circle(sx, sy, r + 4).stroke({ width: 8, color: RING_NEXT, alpha: next ? 0.12 + 0.12 * pulse : 0.08 });
     overlay.circle(sx, sy, r).stroke({ width: 3.5, color: RING_NEXT, alpha: next ? 0.75 + 0.25 * pulse : 0.4 });
+    // For the captions to keep off (`placeOffDots`): its middle, and points round its halo and halfway in.
     addDot(sx, sy);
+    for (let j = 0; j < RING_DOTS; j++) {
+      const a = (2 * Math.PI * j) / RING_DOTS;
+      addDot(sx + (r + 8) * Math.cos(a), sy + (r + 8) * Math.sin(a));
+      addDot(sx + 0.5 * r * Math.cos(a), sy + 0.5 * r * Math.sin(a));
+    }
   }
   if (run.ringsTaken < run.rings.length) {
     // The line is closed: its dashes dimmed under a band of the field's colour.
@@ -2125,16 +2133,22 @@ function placeTouchHint(): void {
 /** Gap kept between the next-level button (and the level's title) and the holes, the line and the ship, px. */
 const ACTION_GAP = 8;
 
+/** The rings left to fly through, drawn with their halo (12 px), as boxes [x0, x1, y0, y1], m (none between levels). */
+function ringExtents(): number[][] {
+  if (!run || run.waiting) return [];
+  const R = RING_RADIUS + 12 / renderer.camera.toScreenLength(1);
+  return run.rings.slice(run.ringsTaken).map(([x, y]) => [x - R, x + R, y - R, y + R]);
+}
 /**
  * The tallest band across the field, between the finish line and `end` (screen px, y down), that no
  * hole's drawing (disc and glow, `holeExtents` of the last frame, and `ghostExtents`: the cleared
- * level's holes drawn dimmed) reaches within ACTION_GAP px:
+ * level's holes drawn dimmed) nor a ring left (`ringExtents`) reaches within ACTION_GAP px:
  * [top, height], px in the canvas (height < 0 when there is none).
  */
 function freeBand(end: number): [number, number] {
   const cam = renderer.camera;
   // Screen bands (px, y down) taken by the holes (or the cleared level's, dimmed), sorted from the top.
-  const taken = [...holeExtents.slice(0, bh.holes.length), ...ghostExtents]
+  const taken = [...holeExtents.slice(0, bh.holes.length), ...ghostExtents, ...ringExtents()]
     .map((e) => [cam.toScreenY(e[3]!) - ACTION_GAP, cam.toScreenY(e[2]!) + ACTION_GAP] as const)
     .sort((a, b) => a[0] - b[0]);
   let from = cam.toScreenY(bh.lineY) + ACTION_GAP;
@@ -2201,6 +2215,8 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   drawHoles(world);
   const cam = renderer.camera;
   overlay.clear();
+  // What the captions keep off this frame: the rings left, the ship, the path (`dots`).
+  dotCount = 0;
   drawRings();
   const s = bh.ship,
     P = world.components.Position,
@@ -2208,7 +2224,6 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   const x = O.x[slotOf(s)]! + (P.x[slotOf(s)]! - O.x[slotOf(s)]!) * alpha,
     y = O.y[slotOf(s)]! + (P.y[slotOf(s)]! - O.y[slotOf(s)]!) * alpha;
   // The ship, for the captions to keep off (its middle and its nose and tail, SHIP_MIN_PX or 1 m apart).
-  dotCount = 0;
   {
     const half = 0.5 * Math.max(SHIP_MIN_PX, cam.toScreenLength(1));
     for (const f of [-1, 0, 1]) addDot(cam.toScreenX(x), cam.toScreenY(y) + f * half);
@@ -2378,6 +2393,11 @@ shell.expose({
   levelBannerBox: (): number[] => {
     const b = levelBanner.getBounds();
     return [b.x, b.y, b.x + b.width, b.y + b.height];
+  },
+  /** The rings left to fly through, each with its halo, as screen boxes [left, top, right, bottom], px in the canvas. */
+  ringBoxes: (): number[][] => {
+    const cam = renderer.camera;
+    return ringExtents().map(([x0, x1, y0, y1]) => [cam.toScreenX(x0!), cam.toScreenY(y1!), cam.toScreenX(x1!), cam.toScreenY(y0!)]);
   },
   /** How far each hole's drawing (disc and glow) reached in the last frame, m: [left, right, bottom, top], holes in order. */
   holeExtents: (): number[][] => holeExtents.map((e) => e.slice()),

@@ -787,6 +787,25 @@ describe.each([
     expect(wall.e.length).toBeGreaterThan(5);
     const field2 = await field();
     expect(field2.top, `${device}: the field's top, level 2 (${field2.text})`).toBeCloseTo(field0.top, 1);
+    // Level 2's title and the path's words cover no part of the gold ring (or its halo): the title sat
+    // on it, centred in the open field, where the ring was on the desktop and on a phone.
+    const overRing = await p.waitFor(() => {
+      const w = window.game as unknown as { ringBoxes(): number[][]; levelBanner(): string; levelBannerBox(): number[] };
+      type Page = { pathLabel(): string; pathHint(): string; textBox(n: string): number[] };
+      const q = window.game as unknown as Page;
+      if (!w.levelBanner().startsWith('Level 2') || q.pathLabel() === '') return null;
+      const boxes: [string, number[]][] = [
+        ['title', w.levelBannerBox()],
+        ['path label', q.textBox('pathLabel')],
+      ];
+      if (q.pathHint()) boxes.push(['path hint', q.textBox('pathHint')]);
+      const rings = w.ringBoxes();
+      const hits = boxes
+        .filter(([, [l, t, r, b]]) => rings.some(([L, T, R, B]) => l! < R! && L! < r! && t! < B! && T! < b!))
+        .map(([n]) => n);
+      return { rings: rings.length, hits };
+    }, null);
+    expect(overRing, `${device}: words over the ring`).toEqual({ rings: 1, hits: [] });
     for (const [left, right, bottom, top] of wall.e) {
       expect(left, `${device}: a hole's left`).toBeGreaterThanOrEqual(0);
       expect(right, `${device}: a hole's right`).toBeLessThanOrEqual(wall.field.width);
