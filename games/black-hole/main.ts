@@ -2350,8 +2350,30 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
       ])
       .fill({ color: 0xffb347, alpha: 0.9 });
   }
+  drawEngineGauge(sx, sy, k, bh.over ? 0 : strength);
   drawShip(sx, sy, k, shipLean, bh.over ? 0x5c677d : 0xe8ecf1);
   updateStatus();
+}
+
+/** The engine's share of full thrust the gauge round the ship showed in the last frame (0: none drawn). */
+let gaugeShown = 0;
+/**
+ * The engine gauge round the ship at (sx, sy), px, k px tall: while it thrusts, a faint circle and an
+ * arc over it from the top, clockwise, as far round as the engine's `strength` (0 to 1 of full
+ * thrust), closing into a bright ring at full. A tap shows a short arc, a hold one that fills in
+ * about 0.4 s (./rules.ts THRUST_RAMP), so how far the engine has built up reads at a glance.
+ */
+function drawEngineGauge(sx: number, sy: number, k: number, strength: number): void {
+  gaugeShown = strength > 0.02 ? strength : 0;
+  if (gaugeShown === 0) return;
+  const r = 0.95 * k,
+    full = strength > 0.999;
+  overlay.circle(sx, sy, r).stroke({ width: 2, color: 0xffffff, alpha: 0.12 });
+  const a0 = -Math.PI / 2;
+  overlay
+    .moveTo(sx + r * Math.cos(a0), sy + r * Math.sin(a0))
+    .arc(sx, sy, r, a0, a0 + 2 * Math.PI * Math.min(1, strength))
+    .stroke({ width: full ? 3 : 2.5, color: full ? 0xffe3b0 : 0xffb347, alpha: full ? 0.85 : 0.75 });
 }
 
 // ---- Test and console hooks on window.game ---------------------------------------------------
@@ -2359,6 +2381,8 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
 shell.expose({
   params,
   panel,
+  /** How far round the engine gauge was drawn in the last frame: the engine's share of full thrust (0: none drawn). */
+  engineGauge: (): number => gaugeShown,
   /** The ship's position, m, and velocity, m/s: [x, y, vx, vy]. */
   ship: (): number[] => {
     const c = bh.world.components;

@@ -25,6 +25,7 @@ interface BlackHolePage {
   ghostHoles(): boolean;
   deathEffect(): { count: number; text: string; flashPeak: number; shown: boolean; caption: string };
   pathPoints(): number;
+  engineGauge(): number;
 }
 
 /**
@@ -85,6 +86,8 @@ describe('black hole', () => {
     expect(await g.page.evaluate(() => (window.game as unknown as BlackHolePage).pathEnd())).toBe('falls');
     await g.page.keyboard.down('ArrowUp');
     await g.waitFor(() => (window.game as unknown as BlackHolePage).levelBanner() === '', null);
+    // The engine gauge round the ship shows how far the thrust has built up while ↑ is held.
+    await g.waitFor(() => (window.game as unknown as BlackHolePage).engineGauge() > 0, null);
     // The climb into the hole, ↑ held, stepped in the page (the fall starts the swallow in its step).
     await g.runUntil(() => (window.game as unknown as BlackHolePage).swallowing(), null, { draw: false });
     await g.frames(2);
@@ -110,6 +113,8 @@ describe('black hole', () => {
     }, null);
     expect(shown.path).toBeGreaterThan(0);
     expect(shown.label).toBe('');
+    // The new ship waits with its engine off: no gauge.
+    expect(await g.page.evaluate(() => (window.game as unknown as BlackHolePage).engineGauge())).toBe(0);
     await g.page.keyboard.down('ArrowLeft');
     await g.waitFor(() => !(window.game as unknown as BlackHolePage).bh.message.startsWith('Swallowed'), null);
     // Paused as soon as the edge warns, so the ship cannot leave the field meanwhile: ↑ pressed
