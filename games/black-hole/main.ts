@@ -42,6 +42,7 @@ import {
   numberParam,
   onButtonPress,
   pageLayout,
+  pauseUnderDrawers,
   seedParam,
 } from '@bitphysics/game-kit';
 import { createPauseOverlay, startPixiGame } from '@bitphysics/game-kit/pixi';
@@ -192,14 +193,16 @@ const PATH_STEPS = 180;
 const PAD_PATH_STEPS = 180;
 const path = new Float64Array(2 * (Math.max(PATH_STEPS, PAD_PATH_STEPS) + 1));
 let pathPoints = 0;
+/** Points round each ring left, twice (its halo and halfway in), that the captions keep off (`drawRings`); room for 8 rings. */
+const RING_DOTS = 16;
 /** Room in `dots` for the points that mark the holes for the coach to keep off (`addHoleDots`). */
 const HOLE_DOTS = 600;
 /**
  * Screen points, px, of what a caption must not cover this frame: every path dot drawn (the pad's side
- * paths too) and the ship (x0, y0, x1, y1, ...; `dotCount` of them). The coach and the path's "falls in"
+ * paths too), the rings left and the ship (x0, y0, x1, y1, ...; `dotCount` of them). The coach and the path's "falls in"
  * are placed off them (`placeOffDots`).
  */
-const dots = new Float64Array(2 * (PATH_STEPS + 2 * PAD_PATH_STEPS + 16 + HOLE_DOTS));
+const dots = new Float64Array(2 * (PATH_STEPS + 2 * PAD_PATH_STEPS + 16 + HOLE_DOTS + 8 * (1 + 2 * RING_DOTS)));
 let dotCount = 0;
 /** Adds a point, px, to `dots` (ignored once it is full). */
 function addDot(x: number, y: number): void {
@@ -379,6 +382,9 @@ const game = await startPixiGame({
   onFrame: (alpha, world) => drawFrame(alpha, world),
 });
 const { shell, renderer, app } = game;
+// On a small screen the menu and settings drawers lie over the field: the flight waits while one is
+// open, and goes on when it closes (unless the player paused it).
+pauseUnderDrawers(shell, { compactOnly: true });
 shell.onWorldChange(() => {
   // A new world is a new start: the level's title shows again.
   bannerWorld++;
@@ -466,8 +472,8 @@ function letGo(): void {
 
 /**
  * Each arrow's last press: the world's step count and performance.now() then, ms. A press thrusts for
- * as long as it was held by the wall clock, at least a tap's TAP_STEPS, from the step it began
- * (./press-timing.ts `releaseStep`), so a finger's tap (down and up between two steps) still thrusts,
+ * as long as it was held by the wall clock, a short press a little longer (a tap TAP_STEPS), from the
+ * step it began (./press-timing.ts `releaseStep`), so a finger's tap (down and up between two steps) still thrusts,
  * and a press pushes the ship as much on a loaded machine as on a fast one.
  */
 const pressedAt = new Map<Arrow, { step: number; ms: number }>();
@@ -678,8 +684,9 @@ const style = document.createElement('style');
 style.textContent = `
 .bh-status { text-align: center; font: 13px/1.4 system-ui, sans-serif; color: #e8ecf1; padding: 6px 10px 2px; }
 .bh-status .bh-numbers { font: 600 15px ui-monospace, Menlo, Consolas, monospace; white-space: nowrap; overflow: hidden; }
-.bh-status .bh-message { color: #ffd166; }
-/* On a phone a message wraps to one or two lines: two are kept, so the scene under it does not jump. */
+.bh-status .bh-message { color: #ffd166; min-height: 1.4em; }
+/* On a phone a message wraps to one or two lines (fitMessage picks a form that fits two): two are
+   kept, so the scene under it does not jump. */
 @media (max-width: 600px) { .bh-status .bh-message { min-height: 2.8em; } .bh-status .bh-numbers { font-size: 13px; } }
 .bh-status.over .bh-message { color: #ff8c8c; cursor: pointer; }
 .bh-status.cleared .bh-message { color: #7ee787; cursor: pointer; font-weight: 600; }
@@ -1152,7 +1159,13 @@ function drawRings(): void {
     const next = i === run.ringsTaken;
     overlay.circle(sx, sy, r + 4).stroke({ width: 8, color: RING_NEXT, alpha: next ? 0.12 + 0.12 * pulse : 0.08 });
     overlay.circle(sx, sy, r).stroke({ width: 3.5, color: RING_NEXT, alpha: next ? 0.75 + 0.25 * pulse : 0.4 });
+    // For the captions to keep off (`placeOffDots`): its middle, and points round its halo and halfway in.
     addDot(sx, sy);
+    for (let j = 0; j < RING_DOTS; j++) {
+      const a = (2 * Math.PI * j) / RING_DOTS;
+      addDot(sx + (r + 8) * Math.cos(a), sy + (r + 8) * Math.sin(a));
+      addDot(sx + 0.5 * r * Math.cos(a), sy + 0.5 * r * Math.sin(a));
+    }
   }
   if (run.ringsTaken < run.rings.length) {
     // The line is closed: its dashes dimmed under a band of the field's colour.
@@ -1480,6 +1493,65 @@ function startSwallow(): void {
   swallow.start = performance.now();
 }
 
+/** The caption at the hole while the ship spirals in ("Swallowed!"), popping up and fading with the swallow. */
+const swallowText = new Text({
+  text: 'Swallowed!',
+  style: { fill: 0xffb070, fontSize: 30, fontFamily: 'sans-serif', fontWeight: 'bold', stroke: { color: 0x000000, width: 5 } },
+});
+swallowText.anchor.set(0.5, 1);
+swallowText.visible = false;
+app.stage.addChild(swallowText);
+
+/**
+ * Draws the swallow at `u` (0 to 1 of SWALLOW_MS), the ship drawn `k` px tall: the ship spirals in
+ * 1.5 turns from at least 2.5 ship heights out (from where it touched the horizon the spiral was
+ * hidden by the hole's glow), stretched along its fall and shrinking to nothing, with a fading trail;
+ * a white flash at the hole, two shock rings spreading from it, and "Swallowed!" popping up over it.
+ */
+function drawSwallow(u: number, k: number): void {
+  const cam = renderer.camera;
+  const hx = cam.toScreenX(swallow.hx),
+    hy = cam.toScreenY(swallow.hy);
+  const d0 = Math.hypot(swallow.dx, swallow.dy) || 1,
+    // Screen px per m of the start offset, widened so the spiral starts 2.5 ship heights out.
+    grow = Math.max(1, (2.5 * k) / cam.toScreenLength(d0));
+  const at = (v: number): [number, number] => {
+    const turn = 3 * Math.PI * v,
+      f = (1 - v) * grow;
+    const ox = f * (swallow.dx * Math.cos(turn) - swallow.dy * Math.sin(turn)),
+      oy = f * (swallow.dx * Math.sin(turn) + swallow.dy * Math.cos(turn));
+    return [cam.toScreenX(swallow.hx + ox), cam.toScreenY(swallow.hy + oy)];
+  };
+  if (u < 0.25) overlay.circle(hx, hy, k * (0.8 + 2 * u)).fill({ color: 0xffffff, alpha: 0.7 * (1 - u / 0.25) });
+  for (const lag of [0, 0.18]) {
+    const w = (u - lag) / 0.8;
+    if (w > 0 && w < 1)
+      overlay.circle(hx, hy, k * (0.6 + 4.5 * w)).stroke({ width: 3, color: lag ? 0xffd27a : 0xff7a2a, alpha: 0.9 * (1 - w) });
+  }
+  // The trail: three fading ships a little behind on the spiral.
+  for (const back of [0.09, 0.06, 0.03]) {
+    const v = Math.max(0, u - back);
+    const [tx, ty] = at(v);
+    overlay.circle(tx, ty, Math.max(1, 0.18 * k * (1 - v))).fill({ color: 0xffb070, alpha: 0.5 * (1 - back / 0.1) * (1 - u) });
+  }
+  const [sx, sy] = at(u);
+  drawShip(sx, sy, k * (1 - u) * (1 + 0.3 * Math.sin(Math.PI * Math.min(1, u * 3))), 12 * Math.PI * u, u < 0.5 ? 0xffd0a0 : 0xff6a3c);
+  // The caption: pops up (scale 1.5 -> 1 in the first fifth), fades in the last quarter; above the
+  // hole, or under it where the field's top is too near.
+  swallowText.visible = true;
+  death.caption = swallowText.text;
+  const pop = u < 0.2 ? 1.5 - 2.5 * u : 1;
+  swallowText.scale.set(pop);
+  swallowText.alpha = u < 0.75 ? 1 : (1 - u) / 0.25;
+  const top = cam.toScreenY(playField.height),
+    gap = 2.2 * k;
+  const above = hy - gap - swallowText.height >= top + 4;
+  swallowText.anchor.set(0.5, above ? 1 : 0);
+  const half = swallowText.width / 2 + 4;
+  const x = Math.max(cam.toScreenX(0) + half, Math.min(cam.toScreenX(playField.width) - half, hx));
+  swallowText.position.set(x, above ? hy - gap : hy + gap);
+}
+
 /** How long a fall's red flash lasts, the shake, and the words over the field, ms. */
 const DEATH_FLASH_MS = 450,
   DEATH_SHAKE_MS = 400,
@@ -1490,9 +1562,10 @@ const DEATH_SHAKE_PX = 10;
 const RESPAWN_MS = 700;
 /**
  * A fall's effect: when it began (performance.now(), ms; -Infinity: none yet), how many have begun,
- * and the strongest flash drawn since the last began (0 to 1: a frame drew it).
+ * the strongest flash drawn since the last began (0 to 1: a frame drew it) and the caption drawn at
+ * the hole since then ('' while none was).
  */
-const death = { start: -Infinity, count: 0, flashPeak: 0 };
+const death = { start: -Infinity, count: 0, flashPeak: 0, caption: '' };
 /** Colours of the words over the field: a fall's (red), a loss off the field's (pale blue: no life lost). */
 const FALL_WORDS = 0xff8c8c,
   LOST_WORDS = 0x9fd3ff;
@@ -1526,6 +1599,7 @@ function startDeath(): void {
   death.start = swallow.active ? swallow.start : performance.now();
   death.count++;
   death.flashPeak = 0;
+  death.caption = '';
   setWaitWords(FALL_WORDS);
 }
 
@@ -1570,7 +1644,7 @@ function drawDeath(): void {
   const age = performance.now() - death.start;
   flashLayer.clear();
   if (age >= 0 && age < DEATH_FLASH_MS) {
-    const a = 0.45 * (1 - age / DEATH_FLASH_MS);
+    const a = 0.5 * (1 - age / DEATH_FLASH_MS);
     death.flashPeak = Math.max(death.flashPeak, a);
     flashLayer
       .rect(cam.toScreenX(0), cam.toScreenY(playField.height), cam.toScreenLength(playField.width), cam.toScreenLength(playField.height))
@@ -1582,7 +1656,8 @@ function drawDeath(): void {
   } else if (app.stage.position.x !== 0 || app.stage.position.y !== 0) app.stage.position.set(0, 0);
   const waits = deathWaits();
   const fresh = age >= 0 && age < DEATH_TEXT_MS && (happening === 'fell' || happening === 'over');
-  deathText.visible = fresh || waits;
+  // Not while the ship spirals in: the caption at the hole says it then (`drawSwallow`).
+  deathText.visible = (fresh || waits) && !swallow.active;
   if (!deathText.visible) return;
   // One message at a time: paused, the words say so in their last line (the pause's own words are
   // hidden, `drawFrame`), in place of how to fly on.
@@ -2058,16 +2133,22 @@ function placeTouchHint(): void {
 /** Gap kept between the next-level button (and the level's title) and the holes, the line and the ship, px. */
 const ACTION_GAP = 8;
 
+/** The rings left to fly through, drawn with their halo (12 px), as boxes [x0, x1, y0, y1], m (none between levels). */
+function ringExtents(): number[][] {
+  if (!run || run.waiting) return [];
+  const R = RING_RADIUS + 12 / renderer.camera.toScreenLength(1);
+  return run.rings.slice(run.ringsTaken).map(([x, y]) => [x - R, x + R, y - R, y + R]);
+}
 /**
  * The tallest band across the field, between the finish line and `end` (screen px, y down), that no
  * hole's drawing (disc and glow, `holeExtents` of the last frame, and `ghostExtents`: the cleared
- * level's holes drawn dimmed) reaches within ACTION_GAP px:
+ * level's holes drawn dimmed) nor a ring left (`ringExtents`) reaches within ACTION_GAP px:
  * [top, height], px in the canvas (height < 0 when there is none).
  */
 function freeBand(end: number): [number, number] {
   const cam = renderer.camera;
   // Screen bands (px, y down) taken by the holes (or the cleared level's, dimmed), sorted from the top.
-  const taken = [...holeExtents.slice(0, bh.holes.length), ...ghostExtents]
+  const taken = [...holeExtents.slice(0, bh.holes.length), ...ghostExtents, ...ringExtents()]
     .map((e) => [cam.toScreenY(e[3]!) - ACTION_GAP, cam.toScreenY(e[2]!) + ACTION_GAP] as const)
     .sort((a, b) => a[0] - b[0]);
   let from = cam.toScreenY(bh.lineY) + ACTION_GAP;
@@ -2134,6 +2215,8 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   drawHoles(world);
   const cam = renderer.camera;
   overlay.clear();
+  // What the captions keep off this frame: the rings left, the ship, the path (`dots`).
+  dotCount = 0;
   drawRings();
   const s = bh.ship,
     P = world.components.Position,
@@ -2141,7 +2224,6 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   const x = O.x[slotOf(s)]! + (P.x[slotOf(s)]! - O.x[slotOf(s)]!) * alpha,
     y = O.y[slotOf(s)]! + (P.y[slotOf(s)]! - O.y[slotOf(s)]!) * alpha;
   // The ship, for the captions to keep off (its middle and its nose and tail, SHIP_MIN_PX or 1 m apart).
-  dotCount = 0;
   {
     const half = 0.5 * Math.max(SHIP_MIN_PX, cam.toScreenLength(1));
     for (const f of [-1, 0, 1]) addDot(cam.toScreenX(x), cam.toScreenY(y) + f * half);
@@ -2216,7 +2298,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   shipPx = k;
   drawDeath();
   // The words of a fall are not drawn over the path's label ("falls in" under "Swallowed!").
-  if (deathText.visible) pathLabel.visible = pathHint.visible = false;
+  if (deathText.visible || swallow.active) pathLabel.visible = pathHint.visible = false;
   // One message at a time: paused over a fall's words (which then say it) or the game-over card, the
   // pause's own words are not drawn (the shade still dims the field).
   drawPauseLine(shell.paused && !deathText.visible && !bh.over);
@@ -2224,20 +2306,12 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   const age = performance.now() - swallow.start;
   if (swallow.active && age > SWALLOW_MS) swallow.active = false;
   if (swallow.active) {
-    // Spiralling in: 1.5 turns, the distance and the size shrinking to nothing.
-    const u = age / SWALLOW_MS,
-      turn = 3 * Math.PI * u,
-      f = 1 - u;
-    const ox = f * (swallow.dx * Math.cos(turn) - swallow.dy * Math.sin(turn)),
-      oy = f * (swallow.dx * Math.sin(turn) + swallow.dy * Math.cos(turn));
-    const hx = cam.toScreenX(swallow.hx),
-      hy = cam.toScreenY(swallow.hy);
-    overlay.circle(hx, hy, k * (0.6 + 1.5 * u)).stroke({ width: 2, color: 0xff7a2a, alpha: f });
-    drawShip(cam.toScreenX(swallow.hx + ox), cam.toScreenY(swallow.hy + oy), k * f, 4 * turn, u < 0.5 ? 0xffd0a0 : 0xff6a3c);
+    drawSwallow(age / SWALLOW_MS, k);
     edgeText.visible = false;
     updateStatus();
     return;
   }
+  swallowText.visible = false;
   lastShip[0] = x;
   lastShip[1] = y;
   // Back at the start after a fall: a ring closes in on the ship, so the eye finds it there.
@@ -2276,8 +2350,30 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
       ])
       .fill({ color: 0xffb347, alpha: 0.9 });
   }
+  drawEngineGauge(sx, sy, k, bh.over ? 0 : strength);
   drawShip(sx, sy, k, shipLean, bh.over ? 0x5c677d : 0xe8ecf1);
   updateStatus();
+}
+
+/** The engine's share of full thrust the gauge round the ship showed in the last frame (0: none drawn). */
+let gaugeShown = 0;
+/**
+ * The engine gauge round the ship at (sx, sy), px, k px tall: while it thrusts, a faint circle and an
+ * arc over it from the top, clockwise, as far round as the engine's `strength` (0 to 1 of full
+ * thrust), closing into a bright ring at full. A tap shows a short arc, a hold one that fills in
+ * about 0.4 s (./rules.ts THRUST_RAMP), so how far the engine has built up reads at a glance.
+ */
+function drawEngineGauge(sx: number, sy: number, k: number, strength: number): void {
+  gaugeShown = strength > 0.02 ? strength : 0;
+  if (gaugeShown === 0) return;
+  const r = 0.95 * k,
+    full = strength > 0.999;
+  overlay.circle(sx, sy, r).stroke({ width: 2, color: 0xffffff, alpha: 0.12 });
+  const a0 = -Math.PI / 2;
+  overlay
+    .moveTo(sx + r * Math.cos(a0), sy + r * Math.sin(a0))
+    .arc(sx, sy, r, a0, a0 + 2 * Math.PI * Math.min(1, strength))
+    .stroke({ width: full ? 3 : 2.5, color: full ? 0xffe3b0 : 0xffb347, alpha: full ? 0.85 : 0.75 });
 }
 
 // ---- Test and console hooks on window.game ---------------------------------------------------
@@ -2285,6 +2381,8 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
 shell.expose({
   params,
   panel,
+  /** How far round the engine gauge was drawn in the last frame: the engine's share of full thrust (0: none drawn). */
+  engineGauge: (): number => gaugeShown,
   /** The ship's position, m, and velocity, m/s: [x, y, vx, vy]. */
   ship: (): number[] => {
     const c = bh.world.components;
@@ -2320,6 +2418,11 @@ shell.expose({
     const b = levelBanner.getBounds();
     return [b.x, b.y, b.x + b.width, b.y + b.height];
   },
+  /** The rings left to fly through, each with its halo, as screen boxes [left, top, right, bottom], px in the canvas. */
+  ringBoxes: (): number[][] => {
+    const cam = renderer.camera;
+    return ringExtents().map(([x0, x1, y0, y1]) => [cam.toScreenX(x0!), cam.toScreenY(y1!), cam.toScreenX(x1!), cam.toScreenY(y0!)]);
+  },
   /** How far each hole's drawing (disc and glow) reached in the last frame, m: [left, right, bottom, top], holes in order. */
   holeExtents: (): number[][] => holeExtents.map((e) => e.slice()),
   /** The same for the cleared level's holes drawn dimmed while the next level waits (none otherwise). */
@@ -2341,13 +2444,15 @@ shell.expose({
   },
   /**
    * The falls' effect: how many have begun, the words of the last one, the strongest red flash
-   * drawn for it (0 to 0.45; 0 until a frame drew it), and whether the last frame showed the words.
+   * drawn for it (0 to 0.5; 0 until a frame drew it), whether the last frame showed the words, and
+   * the caption drawn at the hole while the ship spiralled in ('' until a frame drew it).
    */
-  deathEffect: (): { count: number; text: string; flashPeak: number; shown: boolean } => ({
+  deathEffect: (): { count: number; text: string; flashPeak: number; shown: boolean; caption: string } => ({
     count: death.count,
     text: deathText.text,
     flashPeak: death.flashPeak,
     shown: deathText.visible,
+    caption: death.caption,
   }),
   /** Wall-clock time left of the ready moment after a respawn, ms (no thrust until 0; ./main.ts READY_MS). */
   readyLeft: (): number => (readyEndsAt > 0 ? Math.max(0, readyEndsAt - performance.now()) : 0),

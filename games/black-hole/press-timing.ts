@@ -1,7 +1,7 @@
 /**
- * How long an arrow press thrusts, in game steps (DOM-free): as long as it was held by the wall clock,
- * at least TAP_STEPS, counted from the step at which it began. The page runs the game in fixed steps
- * and, on a slow machine, several of them in a burst at each drawn frame; a key or a finger is let go
+ * How long an arrow press thrusts, in game steps (DOM-free): as long as it was held by the wall clock
+ * (a short one a little longer: `pressSteps`), counted from the step at which it began. The page runs
+ * the game in fixed steps and, on a slow machine, several of them in a burst at each drawn frame; a key or a finger is let go
  * between frames, where the step count lags the wall clock by up to a frame. Letting go at the step
  * count of that moment made the thrust a whole number of frames long: at 10 frames a second a 120 ms
  * press thrust 0.15 or 0.2 s, a 400 ms one 0.4 or 0.5 s. Counted from its own length instead, a press
@@ -9,11 +9,31 @@
  */
 
 /**
- * Steps a tap thrusts at the least (0.25 s at 60 steps a second): from rest a nudge of about
- * 0.4 m/s (./rules.ts THRUST_RAMP: 0.15 s gave 0.16 m/s, a drift of 1 m in 6 s, which looked like
- * nothing), however short the press and however many steps a slow frame runs meanwhile.
+ * Steps a tap thrusts (0.22 s at 60 steps a second), however short the press and however many steps a
+ * slow frame runs meanwhile: from rest a nudge of about 0.34 m/s (./rules.ts THRUST_RAMP; 0.15 s gave
+ * 0.16 m/s, a drift of 1 m in 6 s, which looked like nothing). `pressSteps` of a press of no length.
  */
-export const TAP_STEPS = 15;
+export const TAP_STEPS = 13;
+/**
+ * Held for this many steps (0.43 s; twice TAP_STEPS, so the count never falls) or longer, a press
+ * thrusts just as long as it was held; a shorter one thrusts on a little after it is let go
+ * (`pressSteps`).
+ */
+export const TAP_BLEND_STEPS = 26;
+
+/**
+ * How many steps a press held `held` steps (>= 0, a fraction where the wall clock says so) thrusts:
+ * held + TAP_STEPS x (1 - held / TAP_BLEND_STEPS)^2 below TAP_BLEND_STEPS, else held. The extra
+ * shrinks smoothly to nothing, so each longer press thrusts longer (the count never falls as `held`
+ * grows) and the push grows steadily from a tap's nudge to a hold's full thrust. A flat least length
+ * (every press under 0.25 s thrust 15 steps, then its own length) gave the same push to any press up
+ * to 0.25 s and three times that to one of 0.4 s: a tap and a hold felt like two engines.
+ */
+export function pressSteps(held: number): number {
+  const short = Math.max(0, 1 - held / TAP_BLEND_STEPS);
+  return held + TAP_STEPS * short * short;
+}
+
 /**
  * The most steps a press thrusts on after the moment it is let go (0.5 s): a tap's TAP_STEPS, and for a
  * longer press the steps the game has not run yet (the pacer's lag, a frame or two); a longer wait (a
@@ -23,7 +43,7 @@ export const MAX_TAIL_STEPS = 30;
 
 /**
  * The step count at which the thrust of a press ends: `pressStep` (the step at which it began) plus
- * its length `heldMs` (wall clock, ms) in steps of `dt` s, rounded, at least TAP_STEPS; not before
+ * `pressSteps` of its length `heldMs` (wall clock, ms) in steps of `dt` s, rounded; not before
  * `stepsNow` (the steps run when it was let go: a step run cannot be taken back) and at most
  * MAX_TAIL_STEPS after it.
  * @throws RangeError unless the steps are integers >= 0, heldMs >= 0 and dt > 0 are finite.
@@ -33,6 +53,6 @@ export function releaseStep(pressStep: number, heldMs: number, stepsNow: number,
     throw new RangeError(`releaseStep: pressStep and stepsNow must be integers >= 0, got ${pressStep}, ${stepsNow}`);
   if (!(heldMs >= 0 && Number.isFinite(heldMs) && dt > 0 && Number.isFinite(dt)))
     throw new RangeError(`releaseStep: heldMs must be >= 0 and dt > 0, got ${heldMs}, ${dt}`);
-  const end = pressStep + Math.max(TAP_STEPS, Math.round(heldMs / (1000 * dt)));
+  const end = pressStep + Math.round(pressSteps(heldMs / (1000 * dt)));
   return Math.min(stepsNow + MAX_TAIL_STEPS, Math.max(stepsNow, end));
 }

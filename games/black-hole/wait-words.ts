@@ -79,14 +79,27 @@ export function pausedWords(words: string, pauseText: string): string {
  * The status line `message` (the rules' words, for keys) as a touch screen says it, in the order to
  * try, longest first: a tap for Enter; then, for the phone's two-line status row, shorter forms of a
  * clear's line: without the time in all and the falls, then with the speed bonus named in one word
- * ("+129 (100 + 29 bonus)"), then without how the points were made. The page shows the first that
- * fits (a third line pushed the field under the pad), so a phone keeps the breakdown a desktop shows
- * wherever it fits. Each form appears once (a line with no such parts gives one).
+ * ("+129 (100 + 29 bonus)"), then without how the points were made; and of a level's opening line
+ * and a fall's: without "more if fast", then the goal in fewer words ("Level 1: through the gold
+ * ring, then the green line: 100 points."; "falls cost no life"), then a wall's note shorter
+ * ("Find the gap, then round the hole."). The page shows the first that fits (a third line pushed the field under the
+ * pad, and the field jumped as the line changed length), so a phone keeps the breakdown a desktop
+ * shows wherever it fits. Each form appears once (a line with no such parts gives one).
  */
 export function touchStatusLines(message: string): string[] {
   const tapped = message.replace('Press Enter or R to play again.', 'Tap to play again.').replace('Press Enter for level', 'Tap for level');
   const noFalls = tapped.replace(/ \(\d+\.\d s in all, \d+ falls?\)/, '');
   const shortBonus = noFalls.replace(/ \((\d+) \+ (\d+) speed bonus\)/, ' ($1 + $2 bonus)');
   const noBonus = shortBonus.replace(/ \(\d+ \+ \d+ bonus\)/, '');
-  return [...new Set([tapped, noFalls, shortBonus, noBonus])];
+  // A level's opening line and a fall's: the goal said in fewer words, then a wall's note shorter.
+  const noFast = noBonus.replace(', more if fast.', '.');
+  const shortGoal = noFast
+    .replace(/fly through the (.+?), then reach the green line for (\d+) points/, 'through the $1, then the green line: $2 points')
+    .replace(/reach the green line for (\d+) points/, 'the green line: $1 points')
+    .replace(/falling in costs no life (here|on this level)\./, 'falls cost no life.');
+  const shortNotes = shortGoal.replace(
+    'Find the gap in the wall, then steer round the hole above it.',
+    'Find the gap, then round the hole.',
+  );
+  return [...new Set([tapped, noFalls, shortBonus, noBonus, noFast, shortGoal, shortNotes])];
 }

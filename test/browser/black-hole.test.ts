@@ -23,8 +23,9 @@ interface BlackHolePage {
   pathLabel(): string;
   pathShade(): 'warn' | 'clear' | 'open' | '';
   ghostHoles(): boolean;
-  deathEffect(): { count: number; text: string; flashPeak: number; shown: boolean };
+  deathEffect(): { count: number; text: string; flashPeak: number; shown: boolean; caption: string };
   pathPoints(): number;
+  engineGauge(): number;
 }
 
 /**
@@ -85,6 +86,8 @@ describe('black hole', () => {
     expect(await g.page.evaluate(() => (window.game as unknown as BlackHolePage).pathEnd())).toBe('falls');
     await g.page.keyboard.down('ArrowUp');
     await g.waitFor(() => (window.game as unknown as BlackHolePage).levelBanner() === '', null);
+    // The engine gauge round the ship shows how far the thrust has built up while ↑ is held.
+    await g.waitFor(() => (window.game as unknown as BlackHolePage).engineGauge() > 0, null);
     // The climb into the hole, ↑ held, stepped in the page (the fall starts the swallow in its step).
     await g.runUntil(() => (window.game as unknown as BlackHolePage).swallowing(), null, { draw: false });
     await g.frames(2);
@@ -98,6 +101,9 @@ describe('black hole', () => {
       return d.flashPeak > 0 ? d : null;
     }, null);
     expect(death.count).toBe(1);
+    // While the ship spirals in, a caption at the hole says what happened (the words in the field's
+    // top band, far from where the eye was, were the only words).
+    expect(await g.waitFor(() => (window.game as unknown as BlackHolePage).deathEffect().caption, null)).toBe('Swallowed!');
     // The words stay while the new ship waits parked for the player's thrust, and say so.
     expect(death.text).toMatch(/^Swallowed!\nPractice: no life lost\n(Press|Tap) ↑, ← or → to fly on$/);
     // While the words of the fall show, the path's label is not drawn under them.
@@ -107,6 +113,8 @@ describe('black hole', () => {
     }, null);
     expect(shown.path).toBeGreaterThan(0);
     expect(shown.label).toBe('');
+    // The new ship waits with its engine off: no gauge.
+    expect(await g.page.evaluate(() => (window.game as unknown as BlackHolePage).engineGauge())).toBe(0);
     await g.page.keyboard.down('ArrowLeft');
     await g.waitFor(() => !(window.game as unknown as BlackHolePage).bh.message.startsWith('Swallowed'), null);
     // Paused as soon as the edge warns, so the ship cannot leave the field meanwhile: ↑ pressed
@@ -586,6 +594,16 @@ describe.each([
   it('a finger (or the mouse) held on ↑ and slid onto → turns the thrust right; lifting it stops; the ship is drawn at least 26 px; the next-level button leaves the pad and the ship clear and starts level 2; on a phone ↑ held thrusts up and after the game a tap on the scene plays again', async () => {
     const p = await h.openGame('black-hole', { viewport, touch, query: { level: 1 }, ...(touch ? { locale: 'en-US@posix' } : {}) });
     if (touch) await checkPageContract(p, 'black-hole', 'phone');
+    // Where the field stands: it stays there as the status line changes (level 1's opening line took
+    // three lines on a phone, the lines after it two, and the field moved 10 px each time).
+    const field = () =>
+      p.page.evaluate(() => {
+        const m = document.querySelector<HTMLElement>('[data-hud="message"]')!;
+        const lines = m.offsetHeight / Number.parseFloat(getComputedStyle(m).lineHeight);
+        return { top: document.querySelector('canvas')!.getBoundingClientRect().top, lines, text: m.textContent };
+      });
+    const field0 = await field();
+    expect(field0.lines, field0.text ?? '').toBeLessThan(2.5);
     if (touch) {
       // The touch hint at the start lies clear of the ship waiting at the start and of level 1's holes
       // (each with its glow, 3 radii round): at the stage's foot it covered the ship.
@@ -772,6 +790,27 @@ describe.each([
     }, null);
     expect(await p.page.evaluate(() => (window.game as unknown as { level: { spec: { level: number } } }).level.spec.level)).toBe(2);
     expect(wall.e.length).toBeGreaterThan(5);
+    const field2 = await field();
+    expect(field2.top, `${device}: the field's top, level 2 (${field2.text})`).toBeCloseTo(field0.top, 1);
+    // Level 2's title and the path's words cover no part of the gold ring (or its halo): the title sat
+    // on it, centred in the open field, where the ring was on the desktop and on a phone.
+    const overRing = await p.waitFor(() => {
+      const w = window.game as unknown as { ringBoxes(): number[][]; levelBanner(): string; levelBannerBox(): number[] };
+      type Page = { pathLabel(): string; pathHint(): string; textBox(n: string): number[] };
+      const q = window.game as unknown as Page;
+      if (!w.levelBanner().startsWith('Level 2') || q.pathLabel() === '') return null;
+      const boxes: [string, number[]][] = [
+        ['title', w.levelBannerBox()],
+        ['path label', q.textBox('pathLabel')],
+      ];
+      if (q.pathHint()) boxes.push(['path hint', q.textBox('pathHint')]);
+      const rings = w.ringBoxes();
+      const hits = boxes
+        .filter(([, [l, t, r, b]]) => rings.some(([L, T, R, B]) => l! < R! && L! < r! && t! < B! && T! < b!))
+        .map(([n]) => n);
+      return { rings: rings.length, hits };
+    }, null);
+    expect(overRing, `${device}: words over the ring`).toEqual({ rings: 1, hits: [] });
     for (const [left, right, bottom, top] of wall.e) {
       expect(left, `${device}: a hole's left`).toBeGreaterThanOrEqual(0);
       expect(right, `${device}: a hole's right`).toBeLessThanOrEqual(wall.field.width);
@@ -779,10 +818,26 @@ describe.each([
       expect(top).toBeLessThanOrEqual(wall.field.height);
     }
     // The phone's menu drawer is opaque: the level banner over the field does not show through it.
+    // Opened, it pauses the game (it covers the field); closed, the game goes on.
     if (touch) {
+      const paused = () => p.page.evaluate(() => (window.game as unknown as { paused: boolean }).paused);
+      expect(await paused()).toBe(false);
       await p.page.locator('.bp-drawer-button:not(.bp-side-button)').click();
       const bg = await p.page.evaluate(() => getComputedStyle(document.querySelector('.bp-info')!).backgroundColor);
       expect(bg).toBe('rgb(16, 20, 28)');
+      await p.waitFor(() => (window.game as unknown as { paused: boolean }).paused, null);
+      await p.page.locator('.bp-drawer-button:not(.bp-side-button)').click();
+      await p.waitFor(() => !(window.game as unknown as { paused: boolean }).paused, null);
+      // A pause the player made stays when the menu closes.
+      await p.page
+        .getByRole('button', { name: /^pause/i })
+        .first()
+        .click();
+      expect(await paused()).toBe(true);
+      await p.page.locator('.bp-drawer-button:not(.bp-side-button)').click();
+      await p.page.locator('.bp-drawer-button:not(.bp-side-button)').click();
+      await p.frames(2);
+      expect(await paused()).toBe(true);
     }
     expect(p.errors).toEqual([]);
     await p.close();
@@ -881,7 +936,7 @@ describe.each([
     expect(p.errors).toEqual([]);
   });
 
-  it('a tap thrusts exactly 15 steps, its arrow unlit once let go; paused, arrows do not redraw the path; Path and Replay (F, V) work; the legend names real controls', async () => {
+  it('a tap thrusts exactly 13 steps, its arrow unlit once let go; paused, arrows do not redraw the path; Path and Replay (F, V) work; the legend names real controls', async () => {
     const p = page();
     type Bh = {
       paused: boolean;
@@ -898,8 +953,8 @@ describe.each([
     const legend = await p.page.locator('.bp-legend').textContent();
     expect(legend).not.toContain('big button');
     if (touch) expect(legend).toContain('Level ▶ / Continue ↺');
-    // A tap of ↑ (a finger's tap, or a key pressed and let go at once) thrusts for exactly 15 steps
-    // (TAP_STEPS) of the game: the run's recording (V replays it) holds the thrust 'up' and, 15 steps
+    // A tap of ↑ (a finger's tap, or a key pressed and let go at once) thrusts for exactly 13 steps
+    // (TAP_STEPS) of the game: the run's recording (V replays it) holds the thrust 'up' and, 13 steps
     // later, 'none' (a finger's tap thrust for no step at all; a key's for as many steps as the frames
     // between).
     const upBox = (await p.page.getByRole('button', { name: 'thrust up', exact: true }).boundingBox())!;
@@ -932,7 +987,7 @@ describe.each([
       return events.length >= 2 ? events.map((e) => [e.step, e.args[0]]) : null;
     }, null);
     expect(thrusts.map((t) => t[1])).toEqual(['up', 'none']);
-    expect(thrusts[1]![0]! as number, device).toBe((thrusts[0]![0]! as number) + 15);
+    expect(thrusts[1]![0]! as number, device).toBe((thrusts[0]![0]! as number) + 13);
     await p.page.evaluate(() => {
       (window.game as unknown as Bh).paused = true;
     });

@@ -6,9 +6,10 @@
  * engine's ramp gives (./rules.ts THRUST_RAMP, worked by hand below).
  */
 
+import { slotOf } from '@bitphysics/physics';
 import { describe, expect, test } from 'vitest';
-import { MAX_TAIL_STEPS, releaseStep, TAP_STEPS } from '../../games/black-hole/press-timing';
-import { rampThrust, THRUST_RAMP } from '../../games/black-hole/rules';
+import { MAX_TAIL_STEPS, pressSteps, releaseStep, TAP_BLEND_STEPS, TAP_STEPS } from '../../games/black-hole/press-timing';
+import { createBlackHoleGame, rampThrust, setThrust, stepBlackHole, THRUST_RAMP } from '../../games/black-hole/rules';
 
 const dt = 1 / 60;
 /** Steps the pacer has run at wall time t ms, frames every f ms. */
@@ -20,11 +21,11 @@ function thrustSteps(t0: number, ms: number, f: number): number {
 }
 
 describe('black hole press timing', () => {
-  test('a press thrusts its own length in steps (at least a tap), at 60 and at 10 frames a second', () => {
+  test('a press thrusts its own length in steps (a short one a little longer), at 60 and at 10 frames a second', () => {
     for (const fps of [60, 10]) {
       const f = 1000 / fps;
       for (const ms of [30, 60, 120, 200, 400, 800, 1500]) {
-        const want = Math.max(TAP_STEPS, Math.round(ms / (1000 * dt)));
+        const want = Math.round(pressSteps(ms / (1000 * dt)));
         for (let k = 0; k < 20; k++) {
           const n = thrustSteps(1000 + (k / 20) * f, ms, f);
           // At most the steps of one frame more: the burst that ran before the press began (those
@@ -40,7 +41,8 @@ describe('black hole press timing', () => {
 
   test("a tap's push from rest: the ramp's gentle start and its fall, worked by hand, within 1 %", () => {
     // full 6 m/s^2: up to trim x full over `gentle` s (12 m/s^3), then to full at (1 - trim) x full /
-    // (up - gentle) (18 m/s^3) until the tap ends at T; let go, it dies at full / down (60 m/s^3).
+    // (up - gentle) (18 m/s^3) until the tap ends at T (TAP_STEPS: 0.217 s, just past `gentle`); let
+    // go, it dies at full / down (60 m/s^3).
     const full = 6,
       T = TAP_STEPS * dt,
       { trim, gentle, up, down } = THRUST_RAMP;
@@ -59,6 +61,7 @@ describe('black hole press timing', () => {
     expect(v).toBeCloseTo(want, 1);
     expect(Math.abs(v - want) / want).toBeLessThan(0.01 + (2 * full * dt * dt) / want);
     // A small, visible nudge: 0.3 to 0.6 m/s (1 m in 2 to 3 s; the 9-step tap's 0.16 m/s looked like nothing).
+    expect(pressSteps(0)).toBe(TAP_STEPS);
     expect(v).toBeGreaterThan(0.3);
     expect(v).toBeLessThan(0.6);
   });
@@ -68,5 +71,42 @@ describe('black hole press timing', () => {
     expect(releaseStep(100, 100, 140, dt)).toBe(140);
     expect(() => releaseStep(-1, 10, 0, dt)).toThrow(/releaseStep: pressStep/);
     expect(() => releaseStep(0, Number.NaN, 0, dt)).toThrow(/releaseStep: heldMs/);
+  });
+
+  test('from a tap to a hold the push grows smoothly: each longer press gains more, with no flat stretch and no jump', () => {
+    // The issue this answers: every press under 0.25 s thrust 15 steps, so taps of 50, 150 and 250 ms
+    // all gained 0.48 m/s, and 400 ms 1.38 m/s: the push per extra 100 ms went 0, 0, then 0.6 m/s.
+    // Here presses of 50 ms to 1 s of up from rest (c = 2 m/s so the one hole barely pulls; the gain
+    // is over a hands-off ship), thrust as the page does (releaseStep), the speed after the die-away.
+    const gain = (ms: number): number => {
+      const speed = (press: boolean): number => {
+        const g = createBlackHoleGame({ seed: 6, holes: 1, c: 2 });
+        const n = releaseStep(0, ms, Math.floor(ms / (1000 * dt)), dt);
+        if (press) setThrust(g, 'up');
+        for (let i = 0; i < n + 12; i++) {
+          if (i === n) setThrust(g, 'none');
+          stepBlackHole(g);
+        }
+        return g.world.components.Velocity.y[slotOf(g.ship)]!;
+      };
+      return speed(true) - speed(false);
+    };
+    const ms = [50, 150, 250, 400, 600, 1000];
+    const v = ms.map(gain);
+    // Measured: 0.35, 0.41, 0.63, 1.38, 2.58, 4.99 m/s (before: 0.48, 0.48, 0.48, 1.38, 2.58, 4.99).
+    expect(v[0]).toBeGreaterThan(0.3); // a tap is a visible nudge
+    expect(v[0]).toBeLessThan(0.45); // and a small one
+    expect(v[5]).toBeGreaterThan(4.5); // a 1 s hold builds to full thrust (6 m/s^2)
+    // The push per extra ms: above zero at every step (no flat stretch), never falling, and growing by
+    // at most 3 times from one step to the next (before: from 0 to 0.006 m/s per ms at 250 -> 400 ms).
+    const slope = v.slice(1).map((x, i) => (x - v[i]!) / (ms[i + 1]! - ms[i]!));
+    for (let i = 0; i < slope.length; i++) {
+      expect(slope[i], `${ms[i]} -> ${ms[i + 1]} ms`).toBeGreaterThan(0.0004);
+      if (i > 0) expect(slope[i]! / slope[i - 1]!, `${ms[i]} -> ${ms[i + 1]} ms`).toBeLessThan(4);
+      if (i > 0) expect(slope[i]! / slope[i - 1]!, `${ms[i]} -> ${ms[i + 1]} ms`).toBeGreaterThan(0.95);
+    }
+    // From TAP_BLEND_STEPS on a press thrusts just its own length; below it the steps never fall.
+    expect(pressSteps(TAP_BLEND_STEPS)).toBe(TAP_BLEND_STEPS);
+    for (let h = 0; h < TAP_BLEND_STEPS; h += 0.25) expect(pressSteps(h + 0.25)).toBeGreaterThanOrEqual(pressSteps(h));
   });
 });

@@ -8,7 +8,7 @@
 
 import { setPosition, setVelocity } from '@bitphysics/physics';
 import { describe, expect, test } from 'vitest';
-import { beginLevel, clearMessage, startLevel, stepLevel } from '../../games/black-hole/levels';
+import { beginLevel, clearMessage, levelMessage, levelPoints, levelSpec, startLevel, stepLevel } from '../../games/black-hole/levels';
 import { createBlackHoleGame, setThrust } from '../../games/black-hole/rules';
 import { nextHappening, pausedWords, type ShipHappening, touchStatusLines, waitWords } from '../../games/black-hole/wait-words';
 
@@ -120,5 +120,22 @@ describe('black hole wait words', () => {
     // Every form keeps the points, the level cleared and the tap; a line with nothing to shorten is one form.
     for (const l of touchStatusLines(line)) expect(l).toMatch(/^Level 3 cleared in 9\.4 s.*\+320.*Tap for level 4\.$/);
     expect(touchStatusLines('Game over. Press Enter or R to play again.')).toEqual(['Game over. Tap to play again.']);
+  });
+
+  test("touchStatusLines: every level's opening line and a practice fall's have a form of two phone lines (100 characters at most)", () => {
+    // The phone's status row holds two lines of some 55 characters (13 px type, 370 px): level 1's
+    // opening line (132 characters) took three, and the field under it moved 10 px as the line changed.
+    for (let level = 1; level <= 20; level++) {
+      const forms = touchStatusLines(levelMessage(levelSpec(level)));
+      const last = forms[forms.length - 1]!;
+      expect(last.length, last).toBeLessThanOrEqual(100);
+      // It still names the level and what the line is worth.
+      expect(last).toMatch(new RegExp(`^Level ${level}: .*${levelPoints(level, 0).level} points`));
+    }
+    expect(touchStatusLines(levelMessage(levelSpec(1))).at(-1)).toBe(
+      'Level 1: through the gold ring, then the green line: 100 points. Practice: falls cost no life.',
+    );
+    const fall = touchStatusLines('Swallowed by a black hole! Practice: falling in costs no life on this level. Steer round the red path.');
+    expect(fall.at(-1)).toBe('Swallowed by a black hole! Practice: falls cost no life. Steer round the red path.');
   });
 });
