@@ -2155,12 +2155,14 @@ function draw(world: PhysicsWorld, alpha: number): void {
     sx = (x: number) => cam.toScreenX(x),
     sy = (y: number) => cam.toScreenY(y);
   overlay.clear();
-  // Earth under the ground slab, to the bottom of the screen.
-  overlay.rect(0, sy(-1), cam.width, Math.max(0, cam.height - sy(-1))).fill(EARTH);
+  // Earth under the ground slab, to the bottom of the screen, and on past its right edge to beyond the
+  // rock: a phone's castle inset (drawCloseUp) draws the castle from off the screen.
+  const span = Math.max(cam.width, sx(rockRight() + 2));
+  overlay.rect(0, sy(-1), span, Math.max(0, cam.height - sy(-1))).fill(EARTH);
   // Strata, darker with depth, and pebbles: earth, not a flat brown panel.
   for (let k = 1; k <= 3; k++) {
     const top = sy(-1 - 1.6 * k);
-    if (top < cam.height) overlay.rect(0, top, cam.width, cam.height - top).fill({ color: 0x2a1a0c, alpha: 0.14 });
+    if (top < cam.height) overlay.rect(0, top, span, cam.height - top).fill({ color: 0x2a1a0c, alpha: 0.14 });
   }
   for (let i = 0; i < PEBBLES.length; i += 3) {
     const x = sx(PEBBLES[i]!),
@@ -2172,7 +2174,7 @@ function draw(world: PhysicsWorld, alpha: number): void {
   }
   drawRock();
   // The grass's top edge, lit, over the ground slab.
-  overlay.rect(0, sy(0) - 1, cam.width, Math.max(2, cam.toScreenLength(0.12))).fill(0x76b852);
+  overlay.rect(0, sy(0) - 1, span, Math.max(2, cam.toScreenLength(0.12))).fill(0x76b852);
   drawDistances();
   // The level's hill or pit over the flat ground.
   for (const t of lv.terrain) {
