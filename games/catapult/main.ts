@@ -631,7 +631,8 @@ const zoomsIn = (): boolean => {
  * u the share of the way from the catapult to the castle's front the stone has got (its farthest
  * x), and shifted where needed so the stone stays at least 15 % of the view's width inside it.
  * Upright, close on the stone in flight (./camera uprightFollowView: fitted to the field a phone drew
- * it 7 to 11 px across) until its verdict, then the whole castle.
+ * it 7 to 12 px across; the close aim view draws it 22 px, the follow view 24) until its verdict,
+ * then the whole castle.
  */
 function followView(): View {
   // (On a desktop from the drag view, where the throw was aimed.)
@@ -671,9 +672,9 @@ function frameCamera(): void {
     wreck: levelEnded && shots.length > 0,
     zoomsIn: zoomsIn(),
   });
-  // The look button while aiming (not while a throw is followed): the castle close, the aim view
-  // holding it whole but small on the far levels.
-  // (Not where the castle's close-up shows in the earth while aiming, drawCloseUp: it is the look.)
+  // The look button while aiming (not while a throw is followed): the castle close, where the aim
+  // view is the whole field (an upright tablet). (Not where the aim view is close on the catapult
+  // and the castle's inset shows in the earth, drawCloseUp: it is the look.)
   showLook(upright() && !levelEnded && !shotView && (peeking || (shot === 'aim' && !aimCloseUp(field(), cam.width, cam.height))));
   const target = shot === 'castle' ? shotViewRect() : shot === 'follow' ? followView() : aimView();
   const size = `${cam.width}x${cam.height}`;
@@ -704,9 +705,8 @@ const LOOK_CASTLE = '🔍 Zoom to castle';
 /** The look button's words while the castle shows: back to the catapult. */
 const LOOK_BACK = '◂ Back to catapult';
 /**
- * Upright, a button at the bottom right that shows the castle close while aiming (the aim view holds
- * the catapult and the whole castle, which on the far levels is small), and back; a press to aim
- * goes back too.
+ * Upright where the aim view is the whole field (a tablet), a button at the bottom right that shows
+ * the castle close while aiming (the field draws it smaller), and back; a press to aim goes back too.
  */
 const lookBar = createButtonBar(
   [
