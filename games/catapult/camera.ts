@@ -3,17 +3,18 @@
  * an upright phone the rectangle of each view. The page (main.ts) eases the camera to the view.
  *
  * The views: 'overview' (the catapult, the field and the whole castle: the aim view on a wide
- * screen), 'aim' (on an upright phone: the catapult and the whole castle, so the player sees where
- * they shoot from and what at from the level's start and all through a drag), 'follow' (from the
- * aim view to the castle as the stone crosses the field) and 'castle' (the castle and the rock
- * behind it, close: a phone's look button, and a finished level's wreck).
+ * screen), 'aim' (on an upright phone: the catapult close, with the castle shown in an inset and an
+ * arrow at the screen's edge, or where the screen is wide enough the catapult and the whole castle),
+ * 'follow' (from the aim view to the castle as the stone crosses the field) and 'castle' (the castle
+ * and the rock behind it, close: a phone's look button, and a finished level's wreck).
  *
  * On a desktop the views are `wideViews`: the whole field (the catapult and the castle) for the
  * level's start until its first throw and while the player pulls, the castle close between throws.
  *
- * Upright, an aim view fitted to the catapult and the castle draws the castle small (14 to 22 px a
- * metre at 390 px wide); the page shows it again, close, in the earth under the ground while the
- * player aims (`aimCloseUp`).
+ * Upright, a view fitted to the catapult and the castle draws them small (12 to 21 px a metre at
+ * 390 px wide: a stone 7 to 12 px, the field a thin band under a tall sky); there the aim view is
+ * close on the catapult (`uprightAimView`, AIM_PX_PER_M or closer) and the page shows the castle in
+ * the earth under the ground while the player aims (`aimCloseUp`).
  */
 
 import { LAUNCH, ROCK } from './scene';
@@ -85,10 +86,10 @@ export interface Field {
 export const UPRIGHT_GROUND = 0.28;
 
 /**
- * The same where the castle's close-up shows in the earth while aiming (`aimCloseUp`: a far or wide
- * castle, the catapult and castle drawn at 14 to 22 px a metre): the close-up fills the earth, so
- * more earth draws it larger (on level 4, 1.35 x as large as at UPRIGHT_GROUND) and leaves less empty
- * sky over the small field (62 % of the screen, not 72 %), still room for a full pull's steep arc.
+ * The same where the aim view is close on the catapult and the castle's inset shows in the earth
+ * while aiming (`aimCloseUp`): the inset fills the earth, so more earth draws it larger, and the sky
+ * over the ground (62 % of the screen: 12 m at AIM_PX_PER_M on a 390 x 844 phone) still holds a
+ * strong throw's arc.
  */
 export const UPRIGHT_GROUND_CLOSE = 0.38;
 
@@ -122,12 +123,37 @@ export function uprightView(f: Field, minX: number, maxX: number, width: number,
 }
 
 /**
- * Upright, the aim view: from just behind the catapult's stones (AIM_LEFT) to just past the castle's
- * far end (AIM_PAST), so the whole castle is in view while the player aims (a view that framed the
- * catapult large cut the castle off at the screen's edge, and the player aimed blind).
+ * Upright, the view of the whole field: from just behind the catapult's stones (AIM_LEFT) to just
+ * past the castle's far end (AIM_PAST). The aim view where it draws AIM_CLOSE_PX_PER_M or more (an
+ * upright tablet), else too small (`aimCloseUp`).
+ */
+export function uprightFieldView(f: Field, width: number, height: number): View {
+  return uprightView(f, AIM_LEFT, f.castleMaxX + AIM_PAST, width, height);
+}
+
+/**
+ * Upright, the aim view's scale where the whole field is too small on the screen (`aimCloseUp`), px a
+ * metre: a 0.6 m stone 22 px across (7 to 12 px in the field's view on a 390 px phone), the catapult
+ * with its stones 148 px wide, and the preview's start on every level after the first (to 40 % of the
+ * way to the castle, at most 7 m) inside the view's 10.8 m.
+ */
+export const AIM_PX_PER_M = 36;
+
+/** Upright, the close aim view's right edge stays this far short of the castle's front, m: the castle is wholly off the screen, shown by its inset and its arrow at the edge rather than cut by the edge. */
+export const AIM_SHORT = 1;
+
+/**
+ * Upright, the aim view: where the field's view (`uprightFieldView`) draws the castle small
+ * (`aimCloseUp`: every level on a phone), close on the catapult: from AIM_LEFT, AIM_PX_PER_M px a
+ * metre, or closer where that would reach within AIM_SHORT of the castle's front; the page shows the
+ * castle in an inset under the ground and an arrow with its distance at the screen's edge. Else (an
+ * upright tablet) the field's view, the catapult and the whole castle.
+ * @throws RangeError if the screen's size is not positive.
  */
 export function uprightAimView(f: Field, width: number, height: number): View {
-  return uprightView(f, AIM_LEFT, f.castleMaxX + AIM_PAST, width, height);
+  if (!aimCloseUp(f, width, height)) return uprightFieldView(f, width, height);
+  const right = Math.min(AIM_LEFT + width / AIM_PX_PER_M, f.castleMinX - AIM_SHORT);
+  return uprightView(f, AIM_LEFT, Math.max(right, LAUNCH.x + 2), width, height);
 }
 
 /** Upright, the castle's view: the castle, the rock behind it and room for debris (0.8 m before, 1 m past the rock). */
@@ -136,24 +162,24 @@ export function uprightCastleView(f: Field, width: number, height: number): View
 }
 
 /**
- * Upright, an aim view drawing fewer screen pixels a metre than this gets the castle's close-up in
- * the earth under the ground while the player aims. At 14 to 18 px a metre (a far or wide castle on
- * a 390 px screen) planks are 3 px thick and panes a few pixels, and the materials do not read; at
- * 21 to 22 px a metre (levels 1 and 2, near castles that still must fit whole beside the catapult)
- * a stall is about 25 px tall on a 844 px screen, a thin strip between the sky and the earth. So
- * every level on a phone held upright gets the close-up, and the earth it fills reads as the castle.
+ * Upright, a field's view (`uprightFieldView`) drawing fewer screen pixels a metre than this gives way
+ * to the close aim view (`uprightAimView`) with the castle's inset in the earth under the ground. At
+ * 14 to 18 px a metre (a far or wide castle on a 390 px screen) planks are 3 px thick, panes a few
+ * pixels and a stone 8 to 11 px; at 21 to 22 px a metre (levels 1 and 2) a stall is about 25 px tall
+ * on a 844 px screen, a thin strip between the sky and the earth. So every level on a phone held
+ * upright aims close, and an upright tablet (24 px a metre or more) keeps the whole field.
  */
 export const AIM_CLOSE_PX_PER_M = 24;
 
 /**
- * Whether an upright screen (`width` x `height` px) shows the castle's close-up in the earth while
- * the player aims at field `f`: when its aim view (`uprightAimView`) draws fewer than
- * AIM_CLOSE_PX_PER_M pixels a metre.
+ * Whether an upright screen (`width` x `height` px) aims close on the catapult and shows the castle's
+ * inset in the earth while the player aims at field `f`: when its field's view (`uprightFieldView`)
+ * draws fewer than AIM_CLOSE_PX_PER_M pixels a metre.
  * @throws RangeError as `uprightView` (the screen's size not positive).
  */
 export function aimCloseUp(f: Field, width: number, height: number): boolean {
   if (!(width > 0 && height > 0)) throw new RangeError(`aimCloseUp: the screen must be > 0 px each way, got ${width} x ${height}`);
-  // The aim view's width (uprightAimView's span), fitted to the screen's width.
+  // The field's view's width (uprightFieldView's span), fitted to the screen's width.
   return width / (f.castleMaxX + AIM_PAST - AIM_LEFT) < AIM_CLOSE_PX_PER_M;
 }
 

@@ -497,8 +497,11 @@ shell.onWorldChange(() => {
  * shows in the earth: ./camera uprightGround; the scene in the screen's lower middle, earth
  * under it for the card saying how to play and the next-level button). Which view it heads for is
  * decided in ./camera (cameraShot), and its rectangle there too: from the level's start the aim view
- * holds the catapult and the whole castle (where the player shoots from and what at, the target in
- * view all through a drag); the look button shows the castle close while aiming; in between the
+ * is close on the catapult (./camera uprightAimView: a large stone, band and arc) with the castle in
+ * an inset under the ground and an arrow at the screen's edge saying how far it is (the whole field
+ * on a 390 px phone was a thin band, a stone 8 to 12 px, under a tall empty sky); on an upright
+ * tablet, where the field is large enough, the aim view holds the catapult and the whole castle and
+ * the look button shows the castle close while aiming; in between the
  * camera follows the stone from the aim view to the castle's view as it crosses the field (by the
  * farthest it got), keeping it in sight, and goes back to the aim view once the verdict has been
  * read or at the next press.
@@ -585,7 +588,7 @@ function deskViews(): WideViews {
   if (R > 0 && R < H) minY -= (R * (Math.max(lv.castleTop + PLAY_SKY, PLAY_TOP) - minY)) / (H - R);
   return wideViews(field(), W, H, minY);
 }
-/** The aim view (see above): upright, the catapult and the whole castle (./camera uprightAimView); on a desktop the whole field (./camera wideViews). */
+/** The aim view (see above): upright, close on the catapult, or on a tablet the whole field (./camera uprightAimView); on a desktop the whole field (./camera wideViews). */
 function aimView(): View {
   if (upright()) return uprightAimView(field(), renderer.camera.width, renderer.camera.height);
   if (desktop()) {
@@ -628,7 +631,8 @@ const zoomsIn = (): boolean => {
  * u the share of the way from the catapult to the castle's front the stone has got (its farthest
  * x), and shifted where needed so the stone stays at least 15 % of the view's width inside it.
  * Upright, close on the stone in flight (./camera uprightFollowView: fitted to the field a phone drew
- * it 7 to 11 px across) until its verdict, then the whole castle.
+ * it 7 to 12 px across; the close aim view draws it 22 px, the follow view 24) until its verdict,
+ * then the whole castle.
  */
 function followView(): View {
   // (On a desktop from the drag view, where the throw was aimed.)
@@ -668,9 +672,9 @@ function frameCamera(): void {
     wreck: levelEnded && shots.length > 0,
     zoomsIn: zoomsIn(),
   });
-  // The look button while aiming (not while a throw is followed): the castle close, the aim view
-  // holding it whole but small on the far levels.
-  // (Not where the castle's close-up shows in the earth while aiming, drawCloseUp: it is the look.)
+  // The look button while aiming (not while a throw is followed): the castle close, where the aim
+  // view is the whole field (an upright tablet). (Not where the aim view is close on the catapult
+  // and the castle's inset shows in the earth, drawCloseUp: it is the look.)
   showLook(upright() && !levelEnded && !shotView && (peeking || (shot === 'aim' && !aimCloseUp(field(), cam.width, cam.height))));
   const target = shot === 'castle' ? shotViewRect() : shot === 'follow' ? followView() : aimView();
   const size = `${cam.width}x${cam.height}`;
@@ -701,9 +705,8 @@ const LOOK_CASTLE = '🔍 Zoom to castle';
 /** The look button's words while the castle shows: back to the catapult. */
 const LOOK_BACK = '◂ Back to catapult';
 /**
- * Upright, a button at the bottom right that shows the castle close while aiming (the aim view holds
- * the catapult and the whole castle, which on the far levels is small), and back; a press to aim
- * goes back too.
+ * Upright where the aim view is the whole field (a tablet), a button at the bottom right that shows
+ * the castle close while aiming (the field draws it smaller), and back; a press to aim goes back too.
  */
 const lookBar = createButtonBar(
   [
@@ -1757,10 +1760,12 @@ function drawPause(): void {
  * On an upright phone, once a throw stopped short with the castle off the screen (the camera
  * following it stopped before the castle), a close-up of the castle: the same scene CLOSE_MAX times
  * as large or less, as wide as the screen allows, framed and labelled, in the earth under the
- * ground or in the sky. While aiming, only where the aim view draws the castle small (./camera
- * aimCloseUp: a far or wide castle) and only in the earth, out of the arc's way (in the sky it
- * repeated the castle under the arc's dots), hidden while a pull's band crosses it; there it stands
- * for the look button. Hidden when the level is over, and on other screens.
+ * ground or in the sky. While aiming, where the aim view is close on the catapult and the castle off
+ * the screen (./camera aimCloseUp: every level on a phone), the castle's inset: as large as the
+ * earth under the ground holds it (CLOSE_MAX times the scene's scale at most, smaller where a wide
+ * castle needs), labelled with its distance, with the arc preview's dots where they cross it; it
+ * stands for the look button and stays while a pull's band crosses it (the band is drawn over it).
+ * Hidden when the level is over, and on other screens.
  *
  * The close-up's texture has one texel per CSS pixel whatever the screen's pixel ratio: at a phone's
  * ratio of 2 it would hold four times the texels, and under software WebGL (SwiftShader) rendering
@@ -1783,6 +1788,8 @@ closeSprite.visible = closeFrame.visible = closeLabel.visible = false;
 app.stage.addChild(closeSprite, closeFrame, closeLabel);
 /** The smallest magnification of the close-up worth showing (its largest: CLOSE_MAX). */
 const CLOSE_MIN = 1.4;
+/** Sky over the castle's top in its inset while aiming where the arc preview shows the whole flight (level 1), m: room for its dots coming down on the castle (elsewhere 0.8 m). */
+const CLOSE_SKY_AIMING = 2;
 /** Pixels between the close-up's foot and the top of the castle on the screen. */
 const CLOSE_GAP = 36;
 /** Pixels over the aim's power bar (3.2 m up) kept clear for its two lines of numbers. */
@@ -1850,9 +1857,7 @@ function drawCloseUp(): void {
   const cam = renderer.camera;
   // In the shot view too once a throw that stopped short has settled with the castle off the screen.
   const castleOff = cam.toScreenX(lv.castleMaxX) > cam.width && lastThrow.verdict !== '';
-  // Not while aiming: the aim view holds the whole castle, and a close-up of it would repeat what
-  // the field shows, under the arc's dots.
-  // While aiming at a castle the aim view draws small, once the camera is at rest on it.
+  // While aiming close on the catapult (the castle off the screen), once the camera is at rest.
   const aiming =
     upright() && !levelEnded && !shotView && !peeking && shot === 'aim' && cameraSettled && aimCloseUp(field(), cam.width, cam.height);
   const show = upright() && !levelEnded && ((shotView && castleOff) || aiming);
@@ -1863,7 +1868,7 @@ function drawCloseUp(): void {
     const x0 = lv.castleMinX - 0.6,
       x1 = lv.castleMaxX + 0.6,
       y0 = floor - 0.3,
-      y1 = lv.castleTop + 0.8;
+      y1 = lv.castleTop + (aiming && previewLimit(params.level - 1, lv, params.guide === 'full') === Infinity ? CLOSE_SKY_AIMING : 0.8);
     const sx = cam.toScreenX(x0),
       sy = cam.toScreenY(y1),
       w = cam.toScreenLength(x1 - x0),
@@ -1903,7 +1908,7 @@ function drawCloseUp(): void {
     const zoom = zoomIn(slot);
     // Shown when it magnifies enough, or whenever the castle is off the screen (upright, the aim view
     // frames the catapult: the close-up is where the castle shows).
-    if (aiming ? zoom >= CLOSE_MIN && !crosses(earth) : zoom >= CLOSE_MIN || (zoom > 0.5 && sx + w > cam.width)) {
+    if (aiming ? zoom > 0 : zoom >= CLOSE_MIN || (zoom > 0.5 && sx + w > cam.width)) {
       const bw = Math.round(w * zoom),
         bh = Math.round(h * zoom);
       closeAge++;
@@ -1949,6 +1954,9 @@ function drawCloseUp(): void {
         .roundRect(bx - 1, by - 1, bw + 2, bh + 2, 6)
         .stroke({ width: 2, color: 0xffffff, alpha: 0.9 });
       closeLabel.position.set(bx + 6, by + 4);
+      // While aiming the castle is off the screen: the inset says how far it is (as the arrow at the edge).
+      const words = aiming ? `castle ${Math.round(lv.castleMinX - LAUNCH.x)} m ahead ▸` : 'castle, close up';
+      if (closeLabel.text !== words) closeLabel.text = words;
       closeShown = { box: [bx, by, bw, bh], zoom, src: [sx, sy] };
     }
   }
@@ -2103,7 +2111,7 @@ function drawRock(): void {
 /**
  * Draws the level's distance marks (./distance distanceMarks): a pale tick on the grass's edge and
  * by it how far out it stands, at 11 px (13 on a wide screen): in the grass where it is 24 px deep or
- * more, else over the tick (on a phone the castle's close-up lies in the earth just under the grass).
+ * more and the castle's inset is not under it (a phone's, while aiming), else over the tick.
  */
 function drawDistances(): void {
   const cam = renderer.camera;
@@ -2130,7 +2138,8 @@ function drawDistances(): void {
     if (!m) return;
     const x = cam.toScreenX(m.x),
       y = cam.toScreenY(0),
-      inGrass = depth >= 24;
+      // (Over the grass while the castle's inset lies under it, drawCloseUp: it would hide them.)
+      inGrass = depth >= 24 && !closeWhileAiming;
     overlay.rect(x - 1, y - 6, 2, inGrass ? 6 + depth * 0.25 : 6).fill({ color: 0xffffff, alpha: 0.7 });
     if (label.text !== m.label) label.text = m.label;
     if (label.style.fontSize !== size) label.style.fontSize = size;
@@ -2146,12 +2155,14 @@ function draw(world: PhysicsWorld, alpha: number): void {
     sx = (x: number) => cam.toScreenX(x),
     sy = (y: number) => cam.toScreenY(y);
   overlay.clear();
-  // Earth under the ground slab, to the bottom of the screen.
-  overlay.rect(0, sy(-1), cam.width, Math.max(0, cam.height - sy(-1))).fill(EARTH);
+  // Earth under the ground slab, to the bottom of the screen, and on past its right edge to beyond the
+  // rock: a phone's castle inset (drawCloseUp) draws the castle from off the screen.
+  const span = Math.max(cam.width, sx(rockRight() + 2));
+  overlay.rect(0, sy(-1), span, Math.max(0, cam.height - sy(-1))).fill(EARTH);
   // Strata, darker with depth, and pebbles: earth, not a flat brown panel.
   for (let k = 1; k <= 3; k++) {
     const top = sy(-1 - 1.6 * k);
-    if (top < cam.height) overlay.rect(0, top, cam.width, cam.height - top).fill({ color: 0x2a1a0c, alpha: 0.14 });
+    if (top < cam.height) overlay.rect(0, top, span, cam.height - top).fill({ color: 0x2a1a0c, alpha: 0.14 });
   }
   for (let i = 0; i < PEBBLES.length; i += 3) {
     const x = sx(PEBBLES[i]!),
@@ -2163,7 +2174,7 @@ function draw(world: PhysicsWorld, alpha: number): void {
   }
   drawRock();
   // The grass's top edge, lit, over the ground slab.
-  overlay.rect(0, sy(0) - 1, cam.width, Math.max(2, cam.toScreenLength(0.12))).fill(0x76b852);
+  overlay.rect(0, sy(0) - 1, span, Math.max(2, cam.toScreenLength(0.12))).fill(0x76b852);
   drawDistances();
   // The level's hill or pit over the flat ground.
   for (const t of lv.terrain) {
@@ -2399,6 +2410,12 @@ shell.expose({
   shotView: (): boolean => shotView && zoomsIn(),
   /** The off-screen marker's distance while it shows ('N m past ▸'), else ''. */
   offscreen: (): string => (offscreenText.visible ? offscreenText.text : ''),
+  /** The castle's arrow at the screen's edge while the castle is off the screen (drawCastleMarker): its label and its label's box (px: left, top, right, bottom); null while hidden. */
+  castleMarker: (): { text: string; box: number[] } | null => {
+    if (!castleText.visible) return null;
+    const b = castleText.getBounds();
+    return { text: castleText.text, box: [b.minX, b.minY, b.maxX, b.maxY] };
+  },
   /** The off-screen marker's screen y, px (its label's middle). */
   offscreenY: (): number => offscreenText.y,
   /** Dots of the last throw's trail drawn in the last frame. */

@@ -1,8 +1,8 @@
 /**
  * Catapult camera's decisions (games/catapult/camera.ts), headless: on an upright phone the level
- * opens on the catapult and the whole castle and holds them while aiming, follows a throw to the
- * castle, and the look button shows the castle close while aiming; on a wide screen the aim view is
- * the overview. The upright views are checked against every level's castle (scene.ts) at 390 x 844,
+ * opens close on the catapult (the castle in an inset under the ground) and holds it while aiming,
+ * follows a throw to the castle, and on an upright tablet the aim view holds the whole field and the
+ * look button shows the castle close while aiming; on a wide screen the aim view is the overview. The upright views are checked against every level's castle (scene.ts) at 390 x 844,
  * the desktop's (wideViews) at 1060 x 800.
  */
 
@@ -11,6 +11,8 @@ import { describe, expect, it } from 'vitest';
 import {
   AIM_CLOSE_PX_PER_M,
   AIM_LEFT,
+  AIM_PX_PER_M,
+  AIM_SHORT,
   aimCloseUp,
   type CameraInput,
   cameraShot,
@@ -23,12 +25,13 @@ import {
   UPRIGHT_GROUND_CLOSE,
   uprightAimView,
   uprightCastleView,
+  uprightFieldView,
   uprightFollowView,
   uprightView,
   type View,
   wideViews,
 } from '../../games/catapult/camera';
-import { buildLevel, LAUNCH, LEVEL_COUNT, ROCK, worldOptions } from '../../games/catapult/scene';
+import { buildLevel, LAUNCH, LEVEL_COUNT, PROJECTILE_RADIUS, previewLimit, ROCK, worldOptions } from '../../games/catapult/scene';
 
 /** A phone held upright, nothing thrown. */
 const aiming: CameraInput = { upright: true, peeking: false, shotView: false, wreck: false, zoomsIn: true };
@@ -67,7 +70,7 @@ describe('catapult camera', () => {
     expect(cameraShot({ ...wide, wreck: true, zoomsIn: false })).toBe('overview');
   });
 
-  it('upright 390 x 844 on every level: the aim view holds the catapult and the whole castle under the banner; the castle view is closer; a far castle gets its close-up in the earth', () => {
+  it("upright 390 x 844 on every level: the aim view is close on the catapult (a stone 21 px or more) with the preview's start in view, the castle off the screen for its inset in the earth; the castle view is closer than the field", () => {
     const [W, H] = [390, 844];
     // Screen box (px: left, top, right, bottom) of the world box [x0, y0, x1, y1], m, in view v.
     const onScreen = (v: View, x0: number, y0: number, x1: number, y1: number) => {
@@ -79,51 +82,53 @@ describe('catapult camera', () => {
     for (let level = 0; level < LEVEL_COUNT; level++) {
       const f = levelField(level);
       const aim = uprightAimView(f, W, H),
+        field = uprightFieldView(f, W, H),
         close = uprightCastleView(f, W, H);
       const tag = `level ${level + 1}`;
       // Fitted to the screen's aspect (to a millionth).
-      for (const v of [aim, close]) expect((v.maxY - v.minY) / (v.maxX - v.minX), tag).toBeCloseTo(H / W, 6);
+      for (const v of [aim, field, close]) expect((v.maxY - v.minY) / (v.maxX - v.minX), tag).toBeCloseTo(H / W, 6);
+      // The field's view (the catapult and the whole castle) draws under AIM_CLOSE_PX_PER_M on every
+      // level of a 390 px phone (12 to 21 px a metre: a stone 8 to 12 px, a thin band under the sky),
+      // so the aim view is close on the catapult.
+      const perM = (v: View) => W / (v.maxX - v.minX);
+      expect(perM(field), tag).toBeLessThan(AIM_CLOSE_PX_PER_M);
+      expect(aimCloseUp(f, W, H), tag).toBe(true);
+      shownWhileAiming.push(level + 1);
+      // AIM_PX_PER_M or closer: the 0.6 m stone at least 21 px across, 1.7 x the field's at least.
+      expect(perM(aim), tag).toBeGreaterThanOrEqual(AIM_PX_PER_M - 1e-9);
+      expect(2 * PROJECTILE_RADIUS * perM(aim), tag).toBeGreaterThanOrEqual(21);
+      expect(perM(aim) / perM(field), tag).toBeGreaterThanOrEqual(1.7);
       // The catapult with its mound and its four stones (x -3.0 to 1.1 m, y 0 to 2 m; see look.ts and
-      // main.ts drawAmmo) and the whole castle from the lowest surface to its top: a stranger on a
-      // phone aimed at a keep cut off at the screen's edge.
-      const castle = onScreen(aim, f.castleMinX, f.floor, f.castleMaxX, f.castleTop);
+      // main.ts drawAmmo) on the screen; the castle wholly off it to the right (AIM_SHORT short of its
+      // front: shown by its inset and arrow, not cut by the edge).
       expect(inside(onScreen(aim, -3.0, 0, 1.1, 2)), tag).toBe(true);
-      expect(inside(castle), tag).toBe(true);
-      // The castle's top under the banner (its four lines at 17 px type and panel: 16 + 4 x 1.3 x 17 + 6 = 110 px).
-      expect(castle[1], tag).toBeGreaterThan(110);
-      // The lowest surface UPRIGHT_GROUND of the way up, UPRIGHT_GROUND_CLOSE where the castle's
-      // close-up fills the earth (to a millionth of a pixel), in the castle's view too (the ground
-      // stays put as the camera follows a throw).
-      const ground = aimCloseUp(f, W, H) ? UPRIGHT_GROUND_CLOSE : UPRIGHT_GROUND;
-      expect(onScreen(aim, 0, f.floor, 1, f.floor)[3]!, tag).toBeCloseTo((1 - ground) * H, 6);
-      expect(onScreen(close, 0, f.floor, 1, f.floor)[3]!, tag).toBeCloseTo((1 - ground) * H, 6);
-      // The castle's view: the castle and the rock whole, and at least 1.25 x the aim view's pixels a
-      // metre (the opening look and the look button show the target larger than the aim view does).
+      expect(aim.maxX, tag).toBeLessThanOrEqual(f.castleMinX - AIM_SHORT + 1e-9);
+      // The preview's drawn start on every level after the first (scene previewLimit) ends inside the view.
+      if (level > 0) expect(previewLimit(level, f), tag).toBeLessThan(aim.maxX);
+      // The lowest surface UPRIGHT_GROUND_CLOSE of the way up (to a millionth of a pixel), in the
+      // castle's view too (the ground stays put as the camera follows a throw).
+      expect(onScreen(aim, 0, f.floor, 1, f.floor)[3]!, tag).toBeCloseTo((1 - UPRIGHT_GROUND_CLOSE) * H, 6);
+      expect(onScreen(close, 0, f.floor, 1, f.floor)[3]!, tag).toBeCloseTo((1 - UPRIGHT_GROUND_CLOSE) * H, 6);
+      // The castle's view: the castle and the rock whole, and at least 1.25 x the field view's pixels a metre.
       expect(inside(onScreen(close, f.castleMinX, f.floor, rockRight(f.castleMaxX), Math.max(f.castleTop, 2 * ROCK.hy))), tag).toBe(true);
-      expect(close.maxX - close.minX, tag).toBeLessThan((aim.maxX - aim.minX) / 1.25);
-      // The close-up in the earth while aiming: where the aim view draws under AIM_CLOSE_PX_PER_M
-      // pixels a metre (a stranger could not tell the materials apart at 14 to 18), and there it fits
-      // the earth under the ground (12 px under the ground, 8 px over the screen's foot; as main.ts
-      // drawCloseUp) at 1.4 x the field's scale or more (its least worth showing), with 0.6 m either
-      // side of the castle, 0.3 m under the lowest surface and 0.8 m over the top.
-      const perM = onScreen(aim, 0, 0, 1, 0)[2]! - onScreen(aim, 0, 0, 0, 0)[2]!;
-      expect(aimCloseUp(f, W, H), tag).toBe(perM < AIM_CLOSE_PX_PER_M);
-      if (aimCloseUp(f, W, H)) {
-        const earth = H - onScreen(aim, 0, f.floor, 1, f.floor)[3]! - 12 - 8;
-        const zoom = Math.min((W - 24) / ((f.castleMaxX - f.castleMinX + 1.2) * perM), earth / ((f.castleTop - f.floor + 1.1) * perM));
-        expect(zoom, tag).toBeGreaterThanOrEqual(1.4);
-        // Drawn no smaller than with the ground at UPRIGHT_GROUND (the earth then 0.28 H - 20 px).
-        const before = Math.min(
-          (W - 24) / ((f.castleMaxX - f.castleMinX + 1.2) * perM),
-          (UPRIGHT_GROUND * H - 20) / ((f.castleTop - f.floor + 1.1) * perM),
-        );
-        expect(zoom, tag).toBeGreaterThanOrEqual(before);
-        shownWhileAiming.push(level + 1);
-      }
+      expect(close.maxX - close.minX, tag).toBeLessThan((field.maxX - field.minX) / 1.25);
     }
-    // Every level on a 390 x 844 phone: levels 1 and 2 (near castles, 21 and 22 px a metre) drew
-    // their stalls and keep about 25 px tall in a thin strip; the close-up shows them as large as the rest.
     expect(shownWhileAiming).toEqual([1, 2, 3, 4, 5, 6, 7, 8, 9]);
+  });
+
+  it('upright tablet 768 x 1024 on every level: the aim view is the field, the catapult and the whole castle, UPRIGHT_GROUND up', () => {
+    const [W, H] = [768, 1024];
+    for (let level = 0; level < LEVEL_COUNT; level++) {
+      const f = levelField(level),
+        tag = `level ${level + 1}`;
+      // 24 px a metre or more: no inset, the look button instead (main.ts showLook).
+      expect(aimCloseUp(f, W, H), tag).toBe(false);
+      const aim = uprightAimView(f, W, H);
+      expect(aim, tag).toEqual(uprightFieldView(f, W, H));
+      expect([aim.minX <= -3.0, aim.maxX >= f.castleMaxX, aim.maxY >= f.castleTop], tag).toEqual([true, true, true]);
+      const k = W / (aim.maxX - aim.minX);
+      expect((aim.maxY - f.floor) * k, tag).toBeCloseTo((1 - UPRIGHT_GROUND) * H, 6);
+    }
   });
 
   it('desktop 1060 x 800 (1280 x 800 less the side column) on every level: the castle view fills the screen with the castle; the field view holds the catapult and the castle with the ground low', () => {
@@ -169,7 +174,7 @@ describe('catapult camera', () => {
     const [W, H] = [390, 844];
     for (let level = 0; level < LEVEL_COUNT; level++) {
       const f = levelField(level);
-      const aimPerM = W / (uprightAimView(f, W, H).maxX - uprightAimView(f, W, H).minX);
+      const fieldPerM = W / (uprightFieldView(f, W, H).maxX - uprightFieldView(f, W, H).minX);
       // Drag-free arcs from the catapult to the castle's middle: a 45 degree throw and a 65 degree lob.
       const R = (f.castleMinX + f.castleMaxX) / 2 - LAUNCH.x;
       for (const deg of [45, 65]) {
@@ -183,11 +188,11 @@ describe('catapult camera', () => {
           const wide = view.maxX - view.minX,
             tall = view.maxY - view.minY;
           const at = `level ${level + 1} ${deg} deg t ${t.toFixed(2)} s`;
-          // The screen's aspect; FOLLOW_PX_PER_M (a 0.6 m stone 24 px), over 1.9 x the aim view's
-          // 12 to 19 px a metre (the stone was 7 to 11 px across there).
+          // The screen's aspect; FOLLOW_PX_PER_M (a 0.6 m stone 24 px), over 1.9 x the field view's
+          // 12 to 21 px a metre (the stone was 7 to 12 px across there).
           expect(tall / wide, at).toBeCloseTo(H / W, 6);
           expect(W / wide, at).toBeCloseTo(FOLLOW_PX_PER_M, 6);
-          expect(W / wide, at).toBeGreaterThan(1.9 * aimPerM);
+          expect(W / wide, at).toBeGreaterThan(1.9 * fieldPerM);
           // The stone inside, 15 % of the view from each edge (left of the middle: the castle ahead).
           expect((x - view.minX) / wide, at).toBeGreaterThanOrEqual(0.15);
           expect((view.maxX - x) / wide, at).toBeGreaterThanOrEqual(0.5);
