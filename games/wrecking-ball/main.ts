@@ -98,10 +98,12 @@ import {
   JIB_HEIGHT,
   LINK_RADIUS,
   letGoPull,
+  levelTip,
   pieceOnSwing,
   powerWords,
   pullBack,
   RADIUS_RANGE,
+  SHIELD_HALF,
   type SwingRequest,
   scorePieces,
   starsRule,
@@ -481,7 +483,11 @@ function dress(): void {
   for (const l of h.links) renderer.setShape(l, { geometry: noGeometry, material: noMaterial, scale: 1 });
   renderer.setShape(h.mast, { geometry: noGeometry, material: noMaterial, scale: 1 });
   renderer.setShape(h.trolley, { geometry: hookGeometry, scale: [0.6, 0.35, 0.6], color: COLORS.hook });
+  for (const s of h.shields) renderer.setShape(s, { geometry: shieldGeometry, material: asDrawn(shieldMaterial), scale: 1 });
 }
+/** A concrete shield (./scene SHIELD_HALF): a plain grey slab, unlike every piece, so it reads as what is not to be knocked down. */
+const shieldGeometry = new BoxGeometry(2 * SHIELD_HALF[0], 2 * SHIELD_HALF[1], 2 * SHIELD_HALF[2]);
+const shieldMaterial = new MeshStandardMaterial({ color: 0x9c9a94, roughness: 0.95 });
 const hookGeometry = new BoxGeometry(1, 1, 1);
 /** A geometry with no vertices, for bodies drawn by something else (see dress). */
 const noGeometry = new BufferGeometry();
@@ -2539,7 +2545,7 @@ function hintText(): string {
   if (c.released === 0 && c.moves.length === 0 && aimed === 0) {
     // On a phone the full intro covers the view's top quarter: after INTRO_FULL s it shrinks to one line.
     if (PORTRAIT && shell.world.time > INTRO_FULL) return 'Drag back from a block and let go';
-    return `Drag back from a block and let go: the ball swings into it along the arrow\n★★★: ${clearTarget(handles.pieces, handles.level)} down in ${swingPar(handles.level)} swings: strike the biggest structures low`;
+    return `Drag back from a block and let go: the ball swings into it along the arrow\n★★★: ${clearTarget(handles.pieces, handles.level)} down in ${swingPar(handles.level)} swings: ${levelTip(handles.level)}`;
   }
   return '';
 }
