@@ -2341,7 +2341,8 @@ watchFrameRate();
 
 /**
  * A plan of the site seen from above, under the controls' legend: the jib's reach, the jib, the
- * hook and the ball, every piece in its colour (fallen ones dark) and the target of a swing ringed.
+ * hook and the ball, every piece in its colour (fallen ones dark), the concrete shields in grey and
+ * the target of a swing ringed.
  * A click on a piece's mark swings the ball at it; elsewhere inside the reach sends the hook there.
  */
 const PLAN_PX = 180;
@@ -2377,6 +2378,16 @@ function drawPlan(): void {
     const size = p.fallen ? 3 : 5;
     out.push(
       `<rect x="${X(P.x[p.body]! - size / 2 / planScale)}" y="${Z(P.z[p.body]! - size / 2 / planScale)}" width="${size}" height="${size}" fill="${fill}"/>`,
+    );
+  }
+  // The concrete shields: grey bars their length.
+  const O = shell.world.components.Orientation;
+  for (const b of handles.shields) {
+    const yaw = 2 * Math.atan2(O.y[b]!, O.w[b]!),
+      ex = SHIELD_HALF[0] * Math.cos(yaw),
+      ez = -SHIELD_HALF[0] * Math.sin(yaw);
+    out.push(
+      `<line x1="${X(P.x[b]! - ex)}" y1="${Z(P.z[b]! - ez)}" x2="${X(P.x[b]! + ex)}" y2="${Z(P.z[b]! + ez)}" stroke="#9c9a94" stroke-width="3"/>`,
     );
   }
   const c = handles.crane;

@@ -1,7 +1,7 @@
 /**
  * Wrecking ball, what hides the play: the aim arrow stays on a phone's screen wherever the piece
  * tapped stands, and the jib slewed over a structure is drawn faded rather than hiding it
- * (games/wrecking-ball/main.ts, drawAim and jibOverSite).
+ * (games/wrecking-ball/main.ts, drawAim and jibOverSite); and the site plan shows level 4's shields.
  */
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { Harness, START_TIMEOUT_MS } from './harness';
@@ -123,5 +123,16 @@ describe('wrecking ball: the aim arrow and the jib keep out of the way', () => {
     expect(clear.length).toBeGreaterThan(0);
     expect(over.every((s) => !s.solid)).toBe(true);
     expect(clear.every((s) => s.solid)).toBe(true);
+  });
+
+  it('1280 x 800, level 4: the site plan draws the two concrete shields as grey bars', async () => {
+    const g = await h.openGame('wrecking-ball', {
+      viewport: { width: 1280, height: 800 },
+      query: { level: 4, shadows: 0 },
+      readyTimeoutMs: 60_000,
+    });
+    await g.frames(2);
+    // Before: the plan showed the towers with nothing between them and the mast.
+    expect(await g.page.locator('[data-hud="site-plan"] line[stroke="#9c9a94"]').count()).toBe(2);
   });
 });
