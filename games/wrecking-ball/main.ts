@@ -98,10 +98,12 @@ import {
   JIB_HEIGHT,
   LINK_RADIUS,
   letGoPull,
+  levelTip,
   pieceOnSwing,
   powerWords,
   pullBack,
   RADIUS_RANGE,
+  SHIELD_HALF,
   type SwingRequest,
   scorePieces,
   starsRule,
@@ -481,7 +483,11 @@ function dress(): void {
   for (const l of h.links) renderer.setShape(l, { geometry: noGeometry, material: noMaterial, scale: 1 });
   renderer.setShape(h.mast, { geometry: noGeometry, material: noMaterial, scale: 1 });
   renderer.setShape(h.trolley, { geometry: hookGeometry, scale: [0.6, 0.35, 0.6], color: COLORS.hook });
+  for (const s of h.shields) renderer.setShape(s, { geometry: shieldGeometry, material: asDrawn(shieldMaterial), scale: 1 });
 }
+/** A concrete shield (./scene SHIELD_HALF): a plain grey slab, unlike every piece, so it reads as what is not to be knocked down. */
+const shieldGeometry = new BoxGeometry(2 * SHIELD_HALF[0], 2 * SHIELD_HALF[1], 2 * SHIELD_HALF[2]);
+const shieldMaterial = new MeshStandardMaterial({ color: 0x9c9a94, roughness: 0.95 });
 const hookGeometry = new BoxGeometry(1, 1, 1);
 /** A geometry with no vertices, for bodies drawn by something else (see dress). */
 const noGeometry = new BufferGeometry();
@@ -846,6 +852,55 @@ jibMaterial.alphaMap = jibMaterial.map;
 const jib = new Mesh<BoxGeometry, Material>(new BoxGeometry(JIB_LENGTH, 0.55, 0.55), jibMaterial);
 jib.castShadow = true;
 app.scene.add(jib);
+/** The jib's opacity while it is drawn over a standing piece (`jibOverSite`): the pieces show through. */
+const JIB_FADED = 0.35;
+/** How near (in the screen's half heights) a standing piece's centre is drawn to the jib's line to count as under it. */
+const JIB_COVER = 0.1;
+const jibPoint = new Vector3();
+/** The jib's axis on the screen, x (times the aspect) and y pairs (see jibOverSite). */
+const jibLine: number[] = [];
+/**
+ * Whether the jib, slewed to the angle of cosine `ca` and sine `sa`, is drawn over a standing piece:
+ * a piece's centre drawn within JIB_COVER of its axis (2 m back of the mast to its tip) on the
+ * screen. Slewed to a target between the mast and the camera, the jib hung across the view and hid
+ * the structure; then it is drawn faded (JIB_FADED), solid otherwise.
+ */
+function jibOverSite(ca: number, sa: number): boolean {
+  const aspect = app.camera.aspect;
+  jibLine.length = 0;
+  for (let i = 0; i <= 8; i++) {
+    const d = -2 + (i / 8) * JIB_LENGTH;
+    jibPoint.set(d * ca, JIB_HEIGHT + 0.2, -d * sa).project(app.camera);
+    if (jibPoint.z < 1) jibLine.push(jibPoint.x * aspect, jibPoint.y);
+  }
+  const P = shell.world.components.Position;
+  for (const p of handles.pieces) {
+    if (p.fallen || !isAlive(shell.world, p.body)) continue;
+    jibPoint.set(P.x[p.body]!, P.y[p.body]!, P.z[p.body]!).project(app.camera);
+    if (jibPoint.z > 1 || Math.abs(jibPoint.x) > 1 || Math.abs(jibPoint.y) > 1) continue;
+    const px = jibPoint.x * aspect,
+      py = jibPoint.y;
+    for (let k = 0; k + 3 < jibLine.length; k += 2) {
+      const ax = jibLine[k]!,
+        ay = jibLine[k + 1]!,
+        bx = jibLine[k + 2]! - ax,
+        by = jibLine[k + 3]! - ay;
+      const t = Math.min(1, Math.max(0, ((px - ax) * bx + (py - ay) * by) / (bx * bx + by * by || 1)));
+      if (Math.hypot(px - ax - t * bx, py - ay - t * by) < JIB_COVER) return true;
+    }
+  }
+  return false;
+}
+/** Draws the jib faded while it is over a standing piece (`jibOverSite`), solid otherwise. */
+function fadeJib(ca: number, sa: number): void {
+  const faded = jibOverSite(ca, sa);
+  const m = jib.material;
+  if (m.transparent === faded) return;
+  m.transparent = faded;
+  m.opacity = faded ? JIB_FADED : 1;
+  m.depthWrite = !faded;
+  m.needsUpdate = true;
+}
 // The counter-jib's concrete counterweight and the operator's cab at the top of the mast, turning with the jib.
 const counterweight = new Mesh(new BoxGeometry(1.2, 1.1, 1.0), new MeshStandardMaterial({ color: 0x8d8f94, roughness: 0.9 }));
 counterweight.castShadow = true;
@@ -1697,9 +1752,7 @@ const aimPreview = new Group();
 aimPreview.add(aimShaftEdge, aimHeadEdge, aimShaft, aimHead);
 aimPreview.visible = false;
 app.scene.add(aimPreview);
-/** Where the aim arrow's tail is drawn, in normalised device coordinates (see drawAim). */
-const arrowTail = new Vector3();
-/** Largest |x| and |y|, in normalised device coordinates, of the aim arrow's tail: inside the screen's edge. */
+/** Largest |x| and |y|, in normalised device coordinates, of the aim arrow's corners: inside the screen's edge. */
 const ARROW_EDGE = 0.94;
 /** Shortest the aim arrow's shaft is drawn, m, however near the screen's edge its target stands. */
 const ARROW_SHORTEST = 0.6;
@@ -1709,22 +1762,35 @@ function drawAim(): void {
   aimPreview.visible = piece !== 0 && isAlive(shell.world, piece);
   if (!aimPreview.visible) return;
   const P = shell.world.components.Position;
-  // Its local +x along the ball's travel, its head 0.5 m short of the piece's centre; shortened
-  // while its far end would run off the screen (a target near a phone's edge cut the arrow there).
-  // On a touch screen it is drawn ahead of the piece instead, its tail ARROW_AHEAD past the piece's
-  // centre and its head farthest on: the finger pulls back behind the piece, and an arrow drawn
-  // there lay under the thumb.
-  let length = 1.2 + 3.5 * aiming.power;
+  // Its local +x along the ball's travel, its head 0.5 m short of the piece's centre. On a touch
+  // screen it is drawn ahead of the piece instead, its tail ARROW_AHEAD past the piece's centre and
+  // its head farthest on: the finger pulls back behind the piece, and an arrow drawn there lay under
+  // the thumb. Kept on the screen (a target near a phone's edge put the arrow off it): shortened
+  // while any corner would be off; drawn behind the piece when no length ahead fits; scaled down
+  // (ARROW_SMALLEST) when neither does.
+  const full = 1.2 + 3.5 * aiming.power;
   const ux = Math.cos(aiming.direction),
     uz = Math.sin(aiming.direction);
-  for (let k = 0; k < 8; k++) {
-    const far = touch ? ARROW_AHEAD + length + 1.1 : -(1.4 + length);
-    arrowTail.set(P.x[piece]! + far * ux, 0.08, P.z[piece]! + far * uz).project(app.camera);
-    if (Math.abs(arrowTail.x) < ARROW_EDGE && Math.abs(arrowTail.y) < ARROW_EDGE && arrowTail.z < 1) break;
-    length = Math.max(ARROW_SHORTEST, 0.8 * length);
+  const x0 = P.x[piece]!,
+    z0 = P.z[piece]!;
+  let length = full,
+    shift = 0,
+    scale = 1;
+  fit: for (const ahead of touch ? [true, false] : [false]) {
+    for (const s of [1, ARROW_SMALLEST]) {
+      for (let len = full; ; len = Math.max(ARROW_SHORTEST, 0.8 * len)) {
+        const sh = ahead ? ARROW_AHEAD + len + 1.2 : 0;
+        if (arrowFits(x0, z0, ux, uz, sh, len, s) || (!ahead && s < 1 && len === ARROW_SHORTEST)) {
+          length = len;
+          shift = sh;
+          scale = s;
+          break fit;
+        }
+        if (len === ARROW_SHORTEST) break;
+      }
+    }
   }
-  // How far the whole arrow is moved along the travel: ahead of the piece on a touch screen.
-  const shift = touch ? ARROW_AHEAD + length + 1.2 : 0;
+  aimPreview.scale.setScalar(scale);
   aimPreview.position.set(P.x[piece]!, 0.08, P.z[piece]!);
   aimPreview.rotation.y = -aiming.direction;
   aimShaft.scale.x = length;
@@ -1738,6 +1804,35 @@ function drawAim(): void {
 }
 /** On a touch screen, how far past the piece's centre along the ball's travel the aim arrow's tail is drawn, m. */
 const ARROW_AHEAD = 0.7;
+/** The aim arrow's scale when it fits on the screen at no length at full size. */
+const ARROW_SMALLEST = 0.6;
+/**
+ * The aim arrow's outline with its dark edge, in its own frame (+x along the travel, m, before its
+ * shift), as [along, across, whether the shaft's length is taken off along]: its shaft's tail
+ * corners, its head's tip and back corners.
+ */
+const ARROW_OUTLINE: ReadonlyArray<readonly [number, number, boolean]> = [
+  [-1.2 - AIM_EDGE, 0.2 + AIM_EDGE, true],
+  [-1.2 - AIM_EDGE, -0.2 - AIM_EDGE, true],
+  [-0.9 - AIM_EDGE + (0.8 + 2 * AIM_EDGE), 0, false],
+  [-0.9 - AIM_EDGE - (0.8 + 2 * AIM_EDGE) / 2, 0.87 * (0.8 + 2 * AIM_EDGE), false],
+  [-0.9 - AIM_EDGE - (0.8 + 2 * AIM_EDGE) / 2, -0.87 * (0.8 + 2 * AIM_EDGE), false],
+];
+const arrowCorner = new Vector3();
+/**
+ * Whether the aim arrow drawn at the piece at (x0, z0) along the unit direction (ux, uz), moved
+ * `shift` m along it, its shaft `length` m and the whole scaled by `scale` about the piece, lies
+ * within ARROW_EDGE of the screen's middle (normalised device coordinates) and in front of the camera.
+ */
+function arrowFits(x0: number, z0: number, ux: number, uz: number, shift: number, length: number, scale: number): boolean {
+  for (const [ax, side, tail] of ARROW_OUTLINE) {
+    const along = scale * (shift + ax - (tail ? length : 0)),
+      across = scale * side;
+    arrowCorner.set(x0 + along * ux - across * uz, 0.08, z0 + along * uz + across * ux).project(app.camera);
+    if (!(Math.abs(arrowCorner.x) < ARROW_EDGE && Math.abs(arrowCorner.y) < ARROW_EDGE && arrowCorner.z < 1)) return false;
+  }
+  return true;
+}
 /** Cosine of the largest angle between the ball's travel and the camera's line of sight (across the ground) that counts as glancing. */
 const GLANCING_COS = Math.cos((40 * Math.PI) / 180);
 const lookDir = new Vector3();
@@ -2246,7 +2341,8 @@ watchFrameRate();
 
 /**
  * A plan of the site seen from above, under the controls' legend: the jib's reach, the jib, the
- * hook and the ball, every piece in its colour (fallen ones dark) and the target of a swing ringed.
+ * hook and the ball, every piece in its colour (fallen ones dark), the concrete shields in grey and
+ * the target of a swing ringed.
  * A click on a piece's mark swings the ball at it; elsewhere inside the reach sends the hook there.
  */
 const PLAN_PX = 180;
@@ -2282,6 +2378,16 @@ function drawPlan(): void {
     const size = p.fallen ? 3 : 5;
     out.push(
       `<rect x="${X(P.x[p.body]! - size / 2 / planScale)}" y="${Z(P.z[p.body]! - size / 2 / planScale)}" width="${size}" height="${size}" fill="${fill}"/>`,
+    );
+  }
+  // The concrete shields: grey bars their length.
+  const O = shell.world.components.Orientation;
+  for (const b of handles.shields) {
+    const yaw = 2 * Math.atan2(O.y[b]!, O.w[b]!),
+      ex = SHIELD_HALF[0] * Math.cos(yaw),
+      ez = -SHIELD_HALF[0] * Math.sin(yaw);
+    out.push(
+      `<line x1="${X(P.x[b]! - ex)}" y1="${Z(P.z[b]! - ez)}" x2="${X(P.x[b]! + ex)}" y2="${Z(P.z[b]! + ez)}" stroke="#9c9a94" stroke-width="3"/>`,
     );
   }
   const c = handles.crane;
@@ -2450,7 +2556,7 @@ function hintText(): string {
   if (c.released === 0 && c.moves.length === 0 && aimed === 0) {
     // On a phone the full intro covers the view's top quarter: after INTRO_FULL s it shrinks to one line.
     if (PORTRAIT && shell.world.time > INTRO_FULL) return 'Drag back from a block and let go';
-    return `Drag back from a block and let go: the ball swings into it along the arrow\n★★★: ${clearTarget(handles.pieces, handles.level)} down in ${swingPar(handles.level)} swings: strike the biggest structures low`;
+    return `Drag back from a block and let go: the ball swings into it along the arrow\n★★★: ${clearTarget(handles.pieces, handles.level)} down in ${swingPar(handles.level)} swings: ${levelTip(handles.level)}`;
   }
   return '';
 }
@@ -2536,6 +2642,7 @@ function frame(): void {
   const mid = (RADIUS_RANGE[1] + 2 - 2) / 2;
   jib.position.set(mid * ca, JIB_HEIGHT + 0.2, -mid * sa);
   jib.rotation.set(0, c.angle, 0);
+  fadeJib(ca, sa);
   counterweight.position.set(-2.6 * ca, JIB_HEIGHT - 0.35, 2.6 * sa);
   counterweight.rotation.set(0, c.angle, 0);
   placeTies(c.angle);
@@ -2656,8 +2763,9 @@ function timeToHit(moves: readonly { duration: number; elapsed: number; follow?:
 
 shell.expose({
   /**
-   * Whether the jib is drawn solid (opaque, writing depth) as it is whichever way it points: its
-   * lattice's open panels show what lies behind it (drawn faded toward the camera, it looked ghostly).
+   * Whether the jib is drawn solid (opaque, writing depth), as it is whichever way it points but
+   * over a standing piece on the screen (`jibOverSite`): its lattice's open panels show what lies
+   * behind it (drawn faded whenever it pointed toward the camera, it looked ghostly).
    */
   jibSolid: (): boolean => !jib.material.transparent && jib.material.opacity === 1 && jib.material.depthWrite,
   /** The camera's orbit target, m (it follows the ball; see followAction). */
@@ -2703,6 +2811,26 @@ shell.expose({
     direction: aiming.direction,
     power: aiming.power,
   }),
+  /**
+   * The drawn aim arrow's extent on the screen: the largest |x| and |y| (normalised device
+   * coordinates) of its outline's vertices as drawn (null while it is hidden).
+   */
+  aimExtent: (): { x: number; y: number } | null => {
+    if (!aimPreview.visible) return null;
+    aimPreview.updateMatrixWorld(true);
+    let x = 0,
+      y = 0;
+    const v = new Vector3();
+    for (const mesh of [aimShaftEdge, aimHeadEdge]) {
+      const pos = mesh.geometry.getAttribute('position');
+      for (let i = 0; i < pos.count; i++) {
+        v.fromBufferAttribute(pos, i).applyMatrix4(mesh.matrixWorld).project(app.camera);
+        x = Math.max(x, Math.abs(v.x));
+        y = Math.max(y, Math.abs(v.y));
+      }
+    }
+    return { x, y };
+  },
   /** The piece the running swing is aimed at (0 when none), and whether its arrow shows. */
   aimed: (): { piece: number; arrow: boolean } => ({ piece: aimed, arrow: aimArrow.visible }),
   /**

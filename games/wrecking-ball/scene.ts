@@ -237,6 +237,8 @@ export interface WreckingBallHandles {
   seed: number;
   /** The static crane mast's body. */
   mast: number;
+  /** The level's static concrete shields (`SHIELD_HALF`), bodies: they stop the ball and never fall. */
+  shields: number[];
   /**
    * The crane's drive now: slew rate, rad/s (positive counter-clockwise seen from above), and
    * trolley speed along the jib, m/s (positive outward); mutated by `craneSystem`, which ramps them
@@ -350,9 +352,102 @@ function planks(world: PhysicsWorld, pieces: Piece[], x: number, z: number, laye
 }
 
 /**
+ * A structure of a level: what it is, its direction about the mast (rad) and distance from it (m),
+ * and its sizes (drawn from the level's seed). 'tower', 'wall' and 'planks' are the first levels'
+ * kinds; the later levels' are made of the same pieces: 'tall' a tower of 8 or 9 cubes, 'row' three
+ * towers in a line across the ball's swing about the mast (one swing along the line can topple them
+ * in turn), 'shielded' a tower behind a concrete shield on the mast's side (`SHIELD_HALF`: a swing
+ * straight out from the mast meets the shield, so the tower wants a swing from the side), 'heavy' a tower of four big 1.1 m cubes (600 kg each,
+ * four times a small cube) and 'long' a wall 5 bricks long and 4 or 5 high. Sizes: a tower's cubes and
+ * turn (rad), a wall's rows and bricks, a stack's layers and turn.
+ */
+interface Structure {
+  kind: 'tower' | 'wall' | 'planks' | 'tall' | 'row' | 'shielded' | 'heavy' | 'long';
+  a: number;
+  r: number;
+  sizes: number[];
+}
+
+/**
+ * The structures of each of the LEVELS layouts, a progression: level 1 a tower, a wall and a plank
+ * stack; 2 four of those; 3 tall towers, one row of three; 4 towers behind shield walls; 5 a heavy
+ * tower, a long wall, a row, a shielded tower and a tall one.
+ */
+const LAYOUTS: ReadonlyArray<ReadonlyArray<Structure['kind']>> = [
+  ['tower', 'wall', 'planks'],
+  ['tower', 'planks', 'wall', 'tower'],
+  ['row', 'tall', 'planks', 'tall'],
+  ['shielded', 'wall', 'shielded', 'planks'],
+  ['heavy', 'long', 'row', 'shielded', 'tall'],
+];
+
+/** Level `level`'s structures for seed `seed`: LAYOUTS, cycled with one more tower or wall each LEVELS levels (at most 7 structures). */
+function levelLayout(seed: number, level: number): Structure[] {
+  const rng = seededRandom(seed * 7919 + level * 104729);
+  const layout = ((level - 1) % LEVELS) + 1;
+  const extra = Math.floor((level - 1) / LEVELS);
+  const kinds = LAYOUTS[layout - 1]!.slice();
+  for (let i = 0; i < extra && kinds.length < 7; i++) kinds.push(i % 2 === 0 ? 'tower' : 'wall');
+  const spread = (2 * Math.PI) / Math.max(3, kinds.length);
+  const start = rng() * 2 * Math.PI;
+  return kinds.map((kind, i) => {
+    const a = start + i * spread + (rng() - 0.5) * 0.3 * spread;
+    const r = 5.5 + rng() * 3.5;
+    let sizes: number[];
+    if (kind === 'tower') sizes = [4 + Math.floor(rng() * (2 + layout)), rng() * Math.PI];
+    else if (kind === 'wall') sizes = [3 + Math.floor(rng() * 2), 3 + Math.floor(rng() * 2)];
+    else if (kind === 'planks') sizes = [4 + Math.floor(rng() * 3), rng() * Math.PI];
+    else if (kind === 'tall') sizes = [8 + Math.floor(rng() * 2), rng() * Math.PI];
+    else if (kind === 'row' || kind === 'shielded') sizes = [5 + Math.floor(rng() * 2), rng() * Math.PI];
+    else if (kind === 'heavy') sizes = [4, rng() * Math.PI];
+    else sizes = [4 + Math.floor(rng() * 2), 5];
+    return { kind, a, r, sizes };
+  });
+}
+
+/**
+ * Half extents of a concrete shield, m (3.2 m long, 1.6 m tall, 0.5 m thick): static, it stops a
+ * ball swung at a tower behind it low and straight from the mast; over it or round it, the ball
+ * reaches the tower.
+ */
+export const SHIELD_HALF: readonly [number, number, number] = [1.6, 0.8, 0.25];
+/** How far in front of its tower (toward the mast) a shield stands, m. */
+export const SHIELD_GAP = 1.3;
+
+/** Builds structure `s` of a level (see Structure), its pieces added to `pieces` and its shields' bodies to `shields`. */
+function buildStructure(world: PhysicsWorld, pieces: Piece[], shields: number[], s: Structure): void {
+  const { kind, a, r, sizes } = s;
+  const x = r * Math.cos(a),
+    z = -r * Math.sin(a);
+  const facing = a + Math.PI / 2; // walls across the ball's swing about the mast
+  const n = sizes[0]!,
+    second = sizes[1]!; // a tower's or stack's turn, a wall's bricks
+  const yaw = second;
+  if (kind === 'tower' || kind === 'tall') tower(world, pieces, x, z, n, 0.7, yaw);
+  else if (kind === 'wall' || kind === 'long') wall(world, pieces, x, z, n, second, facing);
+  else if (kind === 'planks') planks(world, pieces, x, z, n, yaw);
+  else if (kind === 'heavy') tower(world, pieces, x, z, n, 1.1, yaw);
+  else if (kind === 'row') {
+    // Across the swing about the mast: along (sin a, cos a), 1.5 m apart.
+    for (const k of [-1, 0, 1]) tower(world, pieces, x + k * 1.5 * Math.sin(a), z + k * 1.5 * Math.cos(a), n, 0.7, yaw);
+  } else {
+    tower(world, pieces, x, z, n, 0.7, yaw);
+    // The shield: SHIELD_GAP nearer the mast, square to the line to it.
+    const d = r - SHIELD_GAP;
+    const shield = addBody(world, {
+      position: [d * Math.cos(a), SHIELD_HALF[1], -d * Math.sin(a)],
+      orientation: [0, Math.sin(facing / 2), 0, Math.cos(facing / 2)],
+      static: true,
+    });
+    addShape3D(world, shield, { type: 'box', halfExtents: [...SHIELD_HALF], friction: 0.6, restitution: 0.1 });
+    shields.push(shield);
+  }
+}
+
+/**
  * Builds the ground, the crane (mast, trolley, chain, ball) and level `level`'s targets, seeded by
- * (seed, level); hooks `craneSystem` into the forces stage. Levels grow: more structures and taller
- * ones, up to about 110 pieces at level 5 and after.
+ * (seed, level); hooks `craneSystem` into the forces stage. The levels follow LAYOUTS (`levelLayout`):
+ * each brings structures of its own, and every LEVELS levels they begin again with one more.
  * @throws RangeError on a level that is not an integer >= 1, a non-integer seed or a ballWeight <= 0.
  */
 export function buildWreckingBall(world: PhysicsWorld, options: WreckingBallOptions = {}): WreckingBallHandles {
@@ -369,32 +464,7 @@ export function buildWreckingBall(world: PhysicsWorld, options: WreckingBallOpti
 
   // The layout first (its random draws in the order the pieces are built in below), so the crane
   // may start pointing between the structures (openStart).
-  const rng = seededRandom(seed * 7919 + level * 104729);
-  const layout = ((level - 1) % LEVELS) + 1;
-  const extra = Math.floor((level - 1) / LEVELS);
-  const kinds: Array<'tower' | 'wall' | 'planks'> = (
-    [
-      ['tower', 'wall', 'planks'],
-      ['tower', 'planks', 'wall', 'tower'],
-      ['wall', 'tower', 'tower', 'planks'],
-      ['tower', 'wall', 'planks', 'wall', 'tower'],
-      ['tower', 'tower', 'wall', 'planks', 'wall'],
-    ] as const
-  )[layout - 1]!.slice();
-  for (let i = 0; i < extra && kinds.length < 7; i++) kinds.push(i % 2 === 0 ? 'tower' : 'wall');
-  const spread = (2 * Math.PI) / Math.max(3, kinds.length);
-  const start = rng() * 2 * Math.PI;
-  const placed = kinds.map((kind, i) => {
-    const a = start + i * spread + (rng() - 0.5) * 0.3 * spread;
-    const r = 5.5 + rng() * 3.5;
-    const sizes =
-      kind === 'tower'
-        ? [4 + Math.floor(rng() * (2 + layout)), rng() * Math.PI]
-        : kind === 'wall'
-          ? [3 + Math.floor(rng() * 2), 3 + Math.floor(rng() * 2)]
-          : [4 + Math.floor(rng() * 3), rng() * Math.PI];
-    return { kind, a, r, sizes };
-  });
+  const placed = levelLayout(seed, level);
 
   const at = options.crane ?? {};
   const crane: CraneState = {
@@ -442,16 +512,22 @@ export function buildWreckingBall(world: PhysicsWorld, options: WreckingBallOpti
   // chain's) carries the load, so the chain cannot stretch (Box2D's advice for heavy ends on chains).
   addDistanceJoint3D(world, { a: trolley, b: ball, anchorA: [hx, hy, hz], anchorB: [hx, top - BALL_RADIUS, hz], minLength: 0 });
 
-  const pieces: Piece[] = [];
-  for (const { kind, a, r, sizes } of placed) {
-    const x = r * Math.cos(a),
-      z = -r * Math.sin(a);
-    const facing = a + Math.PI / 2; // walls across the ball's swing about the mast
-    if (kind === 'tower') tower(world, pieces, x, z, sizes[0]!, 0.7, sizes[1]!);
-    else if (kind === 'wall') wall(world, pieces, x, z, sizes[0]!, sizes[1]!, facing);
-    else planks(world, pieces, x, z, sizes[0]!, sizes[1]!);
-  }
-  const handles: WreckingBallHandles = { trolley, links, ball, pieces, crane, controls, level, seed, mast, drive: { slew: 0, trolley: 0 } };
+  const pieces: Piece[] = [],
+    shields: number[] = [];
+  for (const p of placed) buildStructure(world, pieces, shields, p);
+  const handles: WreckingBallHandles = {
+    trolley,
+    links,
+    ball,
+    pieces,
+    crane,
+    controls,
+    level,
+    seed,
+    mast,
+    shields,
+    drive: { slew: 0, trolley: 0 },
+  };
   addSystem(world, 'forces', craneSystem(handles));
   return handles;
 }
@@ -1596,32 +1672,51 @@ export function fallenCount(pieces: readonly Piece[]): number {
   return n;
 }
 
+/** Swings each of the LEVELS layouts allows (see swingBudget). */
+const BUDGETS = [5, 6, 6, 6, 8];
+/** Swings that clear each of the LEVELS layouts for three stars (see swingPar). */
+const PARS = [2, 2, 3, 3, 3];
+
 /**
  * Swings level `level` allows: taps (or site-plan clicks) on a target and drags of the ball each use
  * one. Without a limit a level falls to any two taps; with it, where the ball is sent is the skill.
- * One or two more than the level has structures: 5 on levels 1 to 3 (three or four structures; level
- * 1 asks for as large a share as levels 2 and 3, see clearShare), 6 from level 4 (five and more), so
- * the careless taps of scripts/wrecking-ball-par.mjs (three ways, three starts each), which take at
- * most 2, 4, 5, 4 and 5 swings on levels 1 to 5, fit within every level's budget.
+ * By layout 5, 6, 6, 6 and 8 (one more each LEVELS levels, as they gain a structure): the careless
+ * games of scripts/wrecking-ball-par.mjs (three ways, three starts each, tapping as the page's tap
+ * swings) take at most 5, 6, 5, 5 and 8 swings on levels 1 to 5, so every one of them earns a star.
  * @throws RangeError on a level that is not an integer >= 1.
  */
 export function swingBudget(level: number): number {
   if (!Number.isInteger(level) || level < 1) throw new RangeError(`swingBudget: level must be an integer >= 1, got ${level}`);
-  return level <= 3 ? 5 : 6;
+  return BUDGETS[(level - 1) % LEVELS]! + Math.floor((level - 1) / LEVELS);
 }
 
 /**
- * Swings that clear level `level` for three stars: 2 on levels 1 to 3, 3 after. With the shares of
- * `clearShare` they ask for aim: no single swing clears levels 1 and 2 (a par of 1 on level 1 would
- * give a first swing three stars at once), and the careless games of scripts/wrecking-ball-par.mjs,
- * swinging as the page's tap does (striking the block aimed at, at its own height: see `aimAt`),
- * rarely earn three stars on any of levels 1 to 5; all 9 still clear level 1 within its budget, and
- * only the top-of-each-structure way, which never aims low, runs out of swings on level 3.
+ * Swings that clear level `level` for three stars: by layout 2, 2, 3, 3 and 3 (one more each LEVELS
+ * levels). With the shares of `clearShare` they ask for a plan: no single swing clears any of levels
+ * 1 to 5, the careless games of scripts/wrecking-ball-par.mjs earn three stars in 1 of their 45
+ * (level 2), while its careful player (each swing the one that brings down the most) clears levels
+ * 3, 4 and 5 in 3 swings each: par there is that plan.
  * @throws RangeError on a level that is not an integer >= 1.
  */
 export function swingPar(level: number): number {
   if (!Number.isInteger(level) || level < 1) throw new RangeError(`swingPar: level must be an integer >= 1, got ${level}`);
-  return level <= 3 ? 2 : 3;
+  return PARS[(level - 1) % LEVELS]! + Math.floor((level - 1) / LEVELS);
+}
+
+/**
+ * The plan level `level`'s structures ask for, as the hint before its first swing says it after the
+ * three stars' target: each layout's own (its row of towers, its shield walls, its heavy tower).
+ * @throws RangeError on a level that is not an integer >= 1.
+ */
+export function levelTip(level: number): string {
+  if (!Number.isInteger(level) || level < 1) throw new RangeError(`levelTip: level must be an integer >= 1, got ${level}`);
+  return [
+    'strike the biggest structures low',
+    'strike the biggest structures low',
+    'swing along the row of towers: each topples the next',
+    'swing round the grey shields, in from the side',
+    'big blocks need a full pull; swing along the row',
+  ][(level - 1) % LEVELS]!;
 }
 
 /**
