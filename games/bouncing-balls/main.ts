@@ -143,6 +143,7 @@ import {
   SEGMENT_RADIUS,
   spawnBall,
 } from './scene';
+import { forEachTouch } from './touches';
 
 /** Colour of the heavy balls (density 4 kg/m^2, steel); the others keep their seeded colours from BALL_PALETTE. */
 const HEAVY_COLOR = 0xa9b4c6;
@@ -934,36 +935,22 @@ function applyNet(world: PhysicsWorld): void {
 const HOOP_HALF_SPAN = 1.5;
 
 /**
- * Marks what each ball in flight touched in the last step (from the step's contact begin events), for
- * its basket's style (hoop.ts ShotStyle): a side wall or the floor of the box (a boundary face) or a
+ * Marks what each ball in flight touched in the last step (the step's contact begin events, told
+ * apart by shape and normal: touches.ts), for its basket's style (hoop.ts ShotStyle): a side wall or the floor of the box (a boundary face) or a
  * ramp makes it a trick shot; the box's top (the ceiling) does not (a lob off it is the easy way
  * up, and as a trick shot it would be the best play): it only ends the swish, as anything else does but
  * the balls round it as it leaves the heap (its first LEAVE_MAX_SECONDS).
  */
 function markTouches(world: PhysicsWorld): void {
   if (flights.size === 0) return;
-  const P = world.components.Position,
-    R = world.components.Ball.radius,
-    top = layoutOf(TALL).box.max[1];
-  const touch = (e: number, other: number): void => {
+  forEachTouch(world, handles.segments, hoopIds, (e, other, kind) => {
     const f = flights.get(e);
     if (!f) return;
-    const s = slotOf(e);
-    // The ceiling: a boundary face met with the ball's top within a centimetre of the box's top.
-    const ceiling = other <= 0 && P.y[s]! + R[s]! > top - CEILING_SLOP;
-    const wall = (other <= 0 && !ceiling) || handles.segments.includes(other);
-    if (wall) f.trick = true;
-    else if (!hoopIds.includes(other) && !crates.includes(other) && world.time - f.at < LEAVE_MAX_SECONDS) return;
+    if (kind === 'wall' || kind === 'ramp') f.trick = true;
+    else if (kind === 'body' && !crates.includes(other) && world.time - f.at < LEAVE_MAX_SECONDS) return;
     f.touched = true;
-  };
-  forEachImpact(world, (a, b) => {
-    touch(a, b);
-    touch(b, a);
   });
 }
-
-/** How near the box's top a ball's top must be for its contact with the boundary to be the ceiling's, m (contact slop and a step's travel). */
-const CEILING_SLOP = 0.1;
 
 /** Which impacts are heard (knocks.ts): the loudest few a step, a cooldown per body, a budget a second. */
 const knocks = createKnockLimiter(KNOCK_LIMITS);
