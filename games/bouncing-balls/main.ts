@@ -97,6 +97,7 @@ import {
   type BallKind,
   createRound,
   FRONT_RIM_LENGTH,
+  goldChoices,
   HOOP_HALF_WIDTH,
   HOOP_RADIUS,
   type HoopRound,
@@ -123,6 +124,7 @@ import {
   streakMultiplier,
   TIME_PER_BASKET,
   throwPath,
+  underHoop,
 } from './hoop';
 import { createKnockLimiter, KNOCK_LIMITS } from './knocks';
 import { drawFloor, drawGlint, drawShadow, drawWall, shadeBallTexture } from './looks';
@@ -643,25 +645,49 @@ function kindOf(e: number): BallKind {
 }
 
 /**
- * Makes a new gold ball: a heap ball (not a basketball, not in flight) picked at random among those
- * with no ball right above them, so it is one the player can reach and throw (any heap ball if none
- * is free; 0 when the heap is empty).
+ * Makes a new gold ball: a heap ball (not a basketball, not in flight, not `not`) picked at random
+ * among hoop.ts goldChoices (out from under the hoop, where it could not score, and with no ball
+ * right above it, so the player can reach and throw it); 0 when the heap is empty.
  */
-function pickGold(world: PhysicsWorld): void {
+function pickGold(world: PhysicsWorld, not = 0): void {
   const c = world.components,
     P = c.Position;
-  const heap = handles.balls.filter((e) => !basketballs.has(e) && !flights.has(e));
-  const free = heap.filter((e) => {
-    const s = slotOf(e);
-    const x = P.x[s]!,
-      y = P.y[s]!,
-      r = c.Ball.radius[s]!;
-    return !heap.some((o) => o !== e && P.y[slotOf(o)]! > y && Math.abs(P.x[slotOf(o)]! - x) < r + c.Ball.radius[slotOf(o)]!);
-  });
-  const from = free.length > 0 ? free : heap;
+  const heap = handles.balls.filter((e) => !basketballs.has(e) && !flights.has(e) && e !== not);
+  const at = heap.map((e) => [P.x[slotOf(e)]!, P.y[slotOf(e)]!, c.Ball.radius[slotOf(e)]!] as const);
+  const from = goldChoices(hoopSpots(TALL)[hoopAt]!, at).map((i) => heap[i]!);
   goldBall = from.length > 0 ? from[Math.floor(goldRng.next() * from.length)]! : 0;
-  if (goldBall !== 0) renderer.setColor(goldBall, GOLD_COLOR);
+  goldRest = 0;
+  if (goldBall === 0) return;
+  goldWas = renderer.colorOf(goldBall);
+  renderer.setColor(goldBall, GOLD_COLOR);
 }
+
+/**
+ * Keeps the gold ball one that can score: once it has lain at rest (under GOLD_REST_SPEED, not in
+ * flight, held or pressed to aim) under the hoop (hoop.ts underHoop: a miss that dropped under the backboard, or a
+ * hoop that moved over it) for GOLD_REST_SECONDS, it is a heap ball again and another one is gold.
+ */
+function keepGoldPlayable(world: PhysicsWorld): void {
+  if (goldBall === 0 || !handles.balls.includes(goldBall)) return;
+  const s = slotOf(goldBall),
+    P = world.components.Position,
+    V = world.components.Velocity;
+  const resting =
+    !flights.has(goldBall) && drag.body !== goldBall && pressBall !== goldBall && Math.hypot(V.x[s]!, V.y[s]!) < GOLD_REST_SPEED;
+  goldRest = resting && underHoop(hoopSpots(TALL)[hoopAt]!, P.x[s]!, P.y[s]!) ? goldRest + world.dt : 0;
+  if (goldRest < GOLD_REST_SECONDS) return;
+  const old = goldBall;
+  renderer.setColor(old, goldWas);
+  pickGold(world, old);
+}
+/** How long the gold ball lies at rest under the hoop before another ball is gold, s. */
+const GOLD_REST_SECONDS = 0.5;
+/** Below this speed the gold ball is at rest, m/s. */
+const GOLD_REST_SPEED = 0.3;
+/** How long the gold ball has lain at rest under the hoop, s. */
+let goldRest = 0;
+/** The gold ball's own colour, given back when another ball becomes gold while it is in the scene. */
+let goldWas = 0;
 /** Picks the gold balls (seeded, so a seed's round is the same). */
 let goldRng = new Rng(1);
 /**
@@ -961,6 +987,7 @@ function stepWorld(world: PhysicsWorld): void {
   markTouches(world);
   applyNet(world);
   playHoop(world);
+  keepGoldPlayable(world);
   clearLoose(world);
   forEachImpact(world, (a, b, impulse) => knocks.offer(a, b, impulse));
   for (const { a, b, impulse } of knocks.take(world.time)) {
