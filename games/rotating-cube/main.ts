@@ -848,11 +848,12 @@ let aimUntil = 0;
 const pop = document.createElement('div');
 pop.dataset.hud = 'pad-pop';
 pop.setAttribute('aria-live', 'polite');
-// Over the face net and the rules card (z-index 5), and on a phone below them (they fill the stage's
-// top there); a long line wraps inside the stage and the screen (on a phone the stage may be
+// Over the face net and the rules card (z-index 5); on a phone at the stage's foot, under the room's
+// front wall (the net and the card fill the stage's top there, and in the middle the pop hid the
+// floor's back row, pads and all, while it faded); a long line wraps inside the stage and the screen (on a phone the stage may be
 // wider than the screen), and its pop-in swells it only a little so the swell stays on screen too.
 pop.style.cssText =
-  `position: absolute; left: 50%; top: ${pageLayout().touch() ? '48%' : '22%'}; transform: translate(-50%, -50%); pointer-events: none; opacity: 0;` +
+  `position: absolute; left: 50%; top: ${pageLayout().touch() ? '95%' : '22%'}; transform: translate(-50%, -50%); pointer-events: none; opacity: 0;` +
   'font: 700 clamp(18px, 5.5vw, 28px) system-ui, sans-serif; color: #ffe27a; text-shadow: 0 2px 6px #000, 0 0 2px #000; text-align: center;' +
   'z-index: 5; width: max-content; max-width: min(calc(100% - 24px), calc(100vw - 24px)); box-sizing: border-box; overflow-wrap: break-word; transition: opacity 0.25s, transform 0.9s ease-out;' +
   // On a dark plate: over the room's pale back wall the yellow alone read faint (contrast under 2:1).

@@ -817,10 +817,12 @@ describe('phone controls', () => {
       return p.count > 0 ? p.text : null;
     }, null);
     expect(pop).toContain('Pad 1 of 5');
-    // The pop fits the phone's width.
+    // The pop fits the phone's width, and it shows under the room's floor (below the floor's front
+    // edge, z 3 m, at any point of its rise): in the middle of the stage it hid the floor's back row.
     const popBox = (await g.page.locator('[data-hud="pad-pop"]').boundingBox())!;
     expect(popBox.x).toBeGreaterThanOrEqual(0);
     expect(popBox.x + popBox.width).toBeLessThanOrEqual(390);
+    expect(popBox.y).toBeGreaterThanOrEqual((await stillPageOf(g, 0, 0, 3)).y);
     // In the room the turn buttons are arrows: ◀ held rolls the cube towards the screen's left.
     const left = g.page.getByRole('button', { name: 'turn left', exact: true });
     expect(await left.textContent()).toBe('◀');
