@@ -945,6 +945,29 @@ describe('bouncing balls: the hoop game', () => {
       expect(g.errors).toEqual([]);
     });
 
+    it('desktop 1280 x 800: a throw off the backboard or the rim into the hoop is a plain basket, not a trick shot', async () => {
+      const g = page();
+      const at = await g.page.evaluate(() => {
+        const game = window.game as unknown as HoopGame & { reset(): void; paused: boolean; remove(id: number): void };
+        game.reset();
+        game.paused = true;
+        for (const id of game.ballIds()) game.remove(id);
+        return game.hoop();
+      });
+      // The first hoop (rim 12 to 14 m at 6 m, its board on the right).
+      expect(at).toMatchObject({ minX: 12, maxX: 14, y: 6 });
+      // From (8, 4) m at (5.5, 8) m/s: a line drive that meets the hoop (board or rim) and drops in; in
+      // the physics world with the hoop alone so do its neighbours 0.25 m/s either way (touches.ts
+      // forEachTouch: the hoop, then down through the opening). Up to three throws, 2.5 s each.
+      expect(await shootUntilScored(g, [5.5, 8], 2.5)).toBe(1);
+      const r = await g.page.evaluate(() =>
+        (window.game as unknown as { round(): { lastStyle: string; tricks: number; swishes: number } }).round(),
+      );
+      // Before, the contact events' body 0 (every static thing) made the backboard and rim "a wall": +3.
+      expect(r).toMatchObject({ lastStyle: 'plain', tricks: 0, swishes: 0 });
+      expect(g.errors).toEqual([]);
+    });
+
     it('desktop 1280 x 800: the hoop stays for three baskets (the same throw scores each time, 3 s back each after the first), then moves', async () => {
       const g = page();
       const r = await g.page.evaluate(() => {
