@@ -225,6 +225,33 @@ export function mayScore(spot: HoopSpot, y: number): boolean {
   return y <= spot.y - SHOT_LINE_GAP;
 }
 
+/**
+ * Whether a ball centred at (x, y), m, lies under the hoop at `spot`: below its rim and past the front
+ * rim's outer end towards the backboard, out to the wall behind the board. No throw from there scores
+ * cleanly (reach.ts findBasket finds none): the way in is down through the opening, and to come down
+ * through it a ball must first fly out past the front rim, which an arc from under the hoop does not
+ * bend back from.
+ */
+export function underHoop(spot: HoopSpot, x: number, y: number): boolean {
+  return y < spot.y && spot.side * (x - spot.x) > -(HOOP_HALF_WIDTH + HOOP_RADIUS + FRONT_RIM_LENGTH);
+}
+
+/**
+ * The balls that may be made the gold one, of `balls` ([x, y, radius] each, m): those out from under
+ * the hoop at `spot` (underHoop, where it could not score) with no ball right above them (one the
+ * player can reach and throw); if none is free, any out from under the hoop; if none is, all of them.
+ * @returns their indices in `balls`, in order.
+ */
+export function goldChoices(spot: HoopSpot, balls: readonly (readonly [number, number, number])[]): number[] {
+  const all = balls.map((_, i) => i);
+  const open = all.filter((i) => !underHoop(spot, balls[i]![0], balls[i]![1]));
+  const free = open.filter((i) => {
+    const [x, y, r] = balls[i]!;
+    return !balls.some(([ox, oy, or], j) => j !== i && oy > y && Math.abs(ox - x) < r + or);
+  });
+  return free.length > 0 ? free : open.length > 0 ? open : all;
+}
+
 /** The phase of a round: warming up until the first basket, the clock running, or time up. */
 export type RoundPhase = 'ready' | 'playing' | 'over';
 

@@ -97,6 +97,7 @@ import {
   type BallKind,
   createRound,
   FRONT_RIM_LENGTH,
+  goldChoices,
   HOOP_HALF_WIDTH,
   HOOP_RADIUS,
   type HoopRound,
@@ -123,6 +124,7 @@ import {
   streakMultiplier,
   TIME_PER_BASKET,
   throwPath,
+  underHoop,
 } from './hoop';
 import { createKnockLimiter, KNOCK_LIMITS } from './knocks';
 import { drawFloor, drawGlint, drawShadow, drawWall, shadeBallTexture } from './looks';
@@ -143,6 +145,7 @@ import {
   SEGMENT_RADIUS,
   spawnBall,
 } from './scene';
+import { forEachTouch } from './touches';
 
 /** Colour of the heavy balls (density 4 kg/m^2, steel); the others keep their seeded colours from BALL_PALETTE. */
 const HEAVY_COLOR = 0xa9b4c6;
@@ -642,25 +645,49 @@ function kindOf(e: number): BallKind {
 }
 
 /**
- * Makes a new gold ball: a heap ball (not a basketball, not in flight) picked at random among those
- * with no ball right above them, so it is one the player can reach and throw (any heap ball if none
- * is free; 0 when the heap is empty).
+ * Makes a new gold ball: a heap ball (not a basketball, not in flight, not `not`) picked at random
+ * among hoop.ts goldChoices (out from under the hoop, where it could not score, and with no ball
+ * right above it, so the player can reach and throw it); 0 when the heap is empty.
  */
-function pickGold(world: PhysicsWorld): void {
+function pickGold(world: PhysicsWorld, not = 0): void {
   const c = world.components,
     P = c.Position;
-  const heap = handles.balls.filter((e) => !basketballs.has(e) && !flights.has(e));
-  const free = heap.filter((e) => {
-    const s = slotOf(e);
-    const x = P.x[s]!,
-      y = P.y[s]!,
-      r = c.Ball.radius[s]!;
-    return !heap.some((o) => o !== e && P.y[slotOf(o)]! > y && Math.abs(P.x[slotOf(o)]! - x) < r + c.Ball.radius[slotOf(o)]!);
-  });
-  const from = free.length > 0 ? free : heap;
+  const heap = handles.balls.filter((e) => !basketballs.has(e) && !flights.has(e) && e !== not);
+  const at = heap.map((e) => [P.x[slotOf(e)]!, P.y[slotOf(e)]!, c.Ball.radius[slotOf(e)]!] as const);
+  const from = goldChoices(hoopSpots(TALL)[hoopAt]!, at).map((i) => heap[i]!);
   goldBall = from.length > 0 ? from[Math.floor(goldRng.next() * from.length)]! : 0;
-  if (goldBall !== 0) renderer.setColor(goldBall, GOLD_COLOR);
+  goldRest = 0;
+  if (goldBall === 0) return;
+  goldWas = renderer.colorOf(goldBall);
+  renderer.setColor(goldBall, GOLD_COLOR);
 }
+
+/**
+ * Keeps the gold ball one that can score: once it has lain at rest (under GOLD_REST_SPEED, not in
+ * flight, held or pressed to aim) under the hoop (hoop.ts underHoop: a miss that dropped under the backboard, or a
+ * hoop that moved over it) for GOLD_REST_SECONDS, it is a heap ball again and another one is gold.
+ */
+function keepGoldPlayable(world: PhysicsWorld): void {
+  if (goldBall === 0 || !handles.balls.includes(goldBall)) return;
+  const s = slotOf(goldBall),
+    P = world.components.Position,
+    V = world.components.Velocity;
+  const resting =
+    !flights.has(goldBall) && drag.body !== goldBall && pressBall !== goldBall && Math.hypot(V.x[s]!, V.y[s]!) < GOLD_REST_SPEED;
+  goldRest = resting && underHoop(hoopSpots(TALL)[hoopAt]!, P.x[s]!, P.y[s]!) ? goldRest + world.dt : 0;
+  if (goldRest < GOLD_REST_SECONDS) return;
+  const old = goldBall;
+  renderer.setColor(old, goldWas);
+  pickGold(world, old);
+}
+/** How long the gold ball lies at rest under the hoop before another ball is gold, s. */
+const GOLD_REST_SECONDS = 0.5;
+/** Below this speed the gold ball is at rest, m/s. */
+const GOLD_REST_SPEED = 0.3;
+/** How long the gold ball has lain at rest under the hoop, s. */
+let goldRest = 0;
+/** The gold ball's own colour, given back when another ball becomes gold while it is in the scene. */
+let goldWas = 0;
 /** Picks the gold balls (seeded, so a seed's round is the same). */
 let goldRng = new Rng(1);
 /**
@@ -934,36 +961,22 @@ function applyNet(world: PhysicsWorld): void {
 const HOOP_HALF_SPAN = 1.5;
 
 /**
- * Marks what each ball in flight touched in the last step (from the step's contact begin events), for
- * its basket's style (hoop.ts ShotStyle): a side wall or the floor of the box (a boundary face) or a
+ * Marks what each ball in flight touched in the last step (the step's contact begin events, told
+ * apart by shape and normal: touches.ts), for its basket's style (hoop.ts ShotStyle): a side wall or the floor of the box (a boundary face) or a
  * ramp makes it a trick shot; the box's top (the ceiling) does not (a lob off it is the easy way
  * up, and as a trick shot it would be the best play): it only ends the swish, as anything else does but
  * the balls round it as it leaves the heap (its first LEAVE_MAX_SECONDS).
  */
 function markTouches(world: PhysicsWorld): void {
   if (flights.size === 0) return;
-  const P = world.components.Position,
-    R = world.components.Ball.radius,
-    top = layoutOf(TALL).box.max[1];
-  const touch = (e: number, other: number): void => {
+  forEachTouch(world, handles.segments, hoopIds, (e, other, kind) => {
     const f = flights.get(e);
     if (!f) return;
-    const s = slotOf(e);
-    // The ceiling: a boundary face met with the ball's top within a centimetre of the box's top.
-    const ceiling = other <= 0 && P.y[s]! + R[s]! > top - CEILING_SLOP;
-    const wall = (other <= 0 && !ceiling) || handles.segments.includes(other);
-    if (wall) f.trick = true;
-    else if (!hoopIds.includes(other) && !crates.includes(other) && world.time - f.at < LEAVE_MAX_SECONDS) return;
+    if (kind === 'wall' || kind === 'ramp') f.trick = true;
+    else if (kind === 'body' && !crates.includes(other) && world.time - f.at < LEAVE_MAX_SECONDS) return;
     f.touched = true;
-  };
-  forEachImpact(world, (a, b) => {
-    touch(a, b);
-    touch(b, a);
   });
 }
-
-/** How near the box's top a ball's top must be for its contact with the boundary to be the ceiling's, m (contact slop and a step's travel). */
-const CEILING_SLOP = 0.1;
 
 /** Which impacts are heard (knocks.ts): the loudest few a step, a cooldown per body, a budget a second. */
 const knocks = createKnockLimiter(KNOCK_LIMITS);
@@ -974,6 +987,7 @@ function stepWorld(world: PhysicsWorld): void {
   markTouches(world);
   applyNet(world);
   playHoop(world);
+  keepGoldPlayable(world);
   clearLoose(world);
   forEachImpact(world, (a, b, impulse) => knocks.offer(a, b, impulse));
   for (const { a, b, impulse } of knocks.take(world.time)) {

@@ -848,11 +848,12 @@ let aimUntil = 0;
 const pop = document.createElement('div');
 pop.dataset.hud = 'pad-pop';
 pop.setAttribute('aria-live', 'polite');
-// Over the face net and the rules card (z-index 5), and on a phone below them (they fill the stage's
-// top there); a long line wraps inside the stage and the screen (on a phone the stage may be
+// Over the face net and the rules card (z-index 5); on a phone at the stage's foot, under the room's
+// front wall (the net and the card fill the stage's top there, and in the middle the pop hid the
+// floor's back row, pads and all, while it faded); a long line wraps inside the stage and the screen (on a phone the stage may be
 // wider than the screen), and its pop-in swells it only a little so the swell stays on screen too.
 pop.style.cssText =
-  `position: absolute; left: 50%; top: ${pageLayout().touch() ? '48%' : '22%'}; transform: translate(-50%, -50%); pointer-events: none; opacity: 0;` +
+  `position: absolute; left: 50%; top: ${pageLayout().touch() ? '95%' : '22%'}; transform: translate(-50%, -50%); pointer-events: none; opacity: 0;` +
   'font: 700 clamp(18px, 5.5vw, 28px) system-ui, sans-serif; color: #ffe27a; text-shadow: 0 2px 6px #000, 0 0 2px #000; text-align: center;' +
   'z-index: 5; width: max-content; max-width: min(calc(100% - 24px), calc(100vw - 24px)); box-sizing: border-box; overflow-wrap: break-word; transition: opacity 0.25s, transform 0.9s ease-out;' +
   // On a dark plate: over the room's pale back wall the yellow alone read faint (contrast under 2:1).
@@ -1120,6 +1121,14 @@ for (const [i, dir] of ['up', 'down', 'left', 'right'].entries()) dpad.buttons[i
 .bp-touchbar.rc-extras button:nth-child(-n + 2) { font-size: 20px; }
 /* On the pivot the turn buttons carry words (Pitch ▲, Roll ⟲): a smaller type that fits their width. */
 .bp-touchbar.rc-pivot button, .bp-touchbar.rc-extras.rc-pivot button:nth-child(-n + 2) { font-size: 14px; }
+/* The round's end on the pivot: a sheet at the stage's foot, leaving the box on its stand in sight. */
+.bp-result.rc-sheet { top: auto; bottom: 10px; transform: translateX(-50%); }
+@media (max-width: 520px) {
+  .bp-result.rc-sheet { width: calc(100% - 16px); max-width: none; bottom: 6px; padding: 10px 12px 10px; }
+  .bp-result.rc-sheet .bp-result-big { margin: 0 0 2px; }
+  .bp-result.rc-sheet .bp-result-line { font-size: 13px; line-height: 1.3; }
+  .bp-result.rc-sheet .bp-result-buttons { margin-top: 6px; }
+}
 /* The touch card, two lines in a smaller type at the stage's foot, so it leaves the front of the floor in sight. */
 body .bp-touch-hint { font-size: 13px; padding: 6px 10px; bottom: 6px; }
 `;
@@ -1703,8 +1712,13 @@ const banner = createDomResultCard(app.canvas.parentElement ?? document.body, {
   passThrough: true,
   titleColour: '#ffffff',
 });
-/** Shows the round's end `end` (round-end.ts) in the banner: Retry (R, the game's reset) and Next (Enter). */
+/**
+ * Shows the round's end `end` (round-end.ts) in the banner: Retry (R, the game's reset) and Next (Enter).
+ * On the pivot (the spins, the flipping box) it is a sheet at the stage's foot (`rc-sheet`), under
+ * the box on its stand: in the middle it hid the box the round was about.
+ */
 function showBanner(end: RoundEndContent): void {
+  banner.element.classList.toggle('rc-sheet', params.mode !== 'room');
   banner.show({
     title: end.title,
     big: end.big,

@@ -945,6 +945,29 @@ describe('bouncing balls: the hoop game', () => {
       expect(g.errors).toEqual([]);
     });
 
+    it('desktop 1280 x 800: a throw off the backboard or the rim into the hoop is a plain basket, not a trick shot', async () => {
+      const g = page();
+      const at = await g.page.evaluate(() => {
+        const game = window.game as unknown as HoopGame & { reset(): void; paused: boolean; remove(id: number): void };
+        game.reset();
+        game.paused = true;
+        for (const id of game.ballIds()) game.remove(id);
+        return game.hoop();
+      });
+      // The first hoop (rim 12 to 14 m at 6 m, its board on the right).
+      expect(at).toMatchObject({ minX: 12, maxX: 14, y: 6 });
+      // From (8, 4) m at (5.5, 8) m/s: a line drive that meets the hoop (board or rim) and drops in; in
+      // the physics world with the hoop alone so do its neighbours 0.25 m/s either way (touches.ts
+      // forEachTouch: the hoop, then down through the opening). Up to three throws, 2.5 s each.
+      expect(await shootUntilScored(g, [5.5, 8], 2.5)).toBe(1);
+      const r = await g.page.evaluate(() =>
+        (window.game as unknown as { round(): { lastStyle: string; tricks: number; swishes: number } }).round(),
+      );
+      // Before, the contact events' body 0 (every static thing) made the backboard and rim "a wall": +3.
+      expect(r).toMatchObject({ lastStyle: 'plain', tricks: 0, swishes: 0 });
+      expect(g.errors).toEqual([]);
+    });
+
     it('desktop 1280 x 800: the hoop stays for three baskets (the same throw scores each time, 3 s back each after the first), then moves', async () => {
       const g = page();
       const r = await g.page.evaluate(() => {
@@ -1103,6 +1126,54 @@ describe('bouncing balls: the hoop game', () => {
       await g.page.evaluate(() => {
         (window.game as unknown as { paused: boolean }).paused = false;
       });
+      expect(g.errors).toEqual([]);
+    });
+
+    it('desktop: the gold ball come to rest behind the backboard (under the hoop, where it cannot score) hands its gold to a ball that can', async () => {
+      const g = page();
+      const r = await g.page.evaluate(() => {
+        type W = { components: { Position: { x: Float64Array; y: Float64Array }; Velocity: { x: Float64Array; y: Float64Array } } };
+        const game = window.game as unknown as HoopGame & {
+          paused: boolean;
+          reset(): void;
+          step(): void;
+          goldBall(): number;
+          positions(): number[];
+          world: W;
+        };
+        game.reset();
+        game.paused = true;
+        // The gold ball put on the floor between the first hoop's backboard (x 14.08 m) and the right wall.
+        const old = game.goldBall(),
+          s = old % 2 ** 25,
+          c = game.world.components;
+        c.Position.x[s] = 15;
+        c.Position.y[s] = 0.6;
+        c.Velocity.x[s] = 0;
+        c.Velocity.y[s] = 0;
+        const at: number[] = [];
+        for (let k = 0; k < 90; k++) {
+          game.step();
+          if (game.goldBall() !== old && at.length === 0) at.push(k);
+        }
+        const now = game.goldBall(),
+          i = game.ballIds().indexOf(now);
+        return {
+          old,
+          now,
+          after: at[0] ?? -1,
+          x: game.positions()[2 * i]!,
+          y: game.positions()[2 * i + 1]!,
+          stays: game.ballIds().includes(old),
+        };
+      });
+      // Another heap ball is gold after the 0.5 s at rest there (30 steps; it lands and settles first),
+      // one out from under the hoop (past the front rim's end, 11.67 m, or above the rim, 6 m); the old one stays, a heap ball.
+      expect(r.now).not.toBe(r.old);
+      expect(r.now).not.toBe(0);
+      expect(r.after).toBeGreaterThanOrEqual(30);
+      expect(r.x < 11.67 || r.y >= 6).toBe(true);
+      expect(r.stays).toBe(true);
       expect(g.errors).toEqual([]);
     });
 
@@ -1511,6 +1582,10 @@ describe('bouncing balls: the hoop game', () => {
       const g = await h.openGame('bouncing-balls', { viewport: { width: 390, height: 844 }, touch: true, query: { count: 8 } });
       type Slide = AimGame & { spawn(x: number, y: number): number; positions(): number[] };
       await g.page.evaluate(() => {
+        // The same start whatever ran before: nothing stored (best score, mute), and the touch hint
+        // card (which a first touch or 9 s of wall clock fades) taken away, so the swipe meets the field.
+        localStorage.clear();
+        document.querySelector('[data-hud="touch-hint"]')?.remove();
         const game = window.game as unknown as Slide;
         game.paused = true;
         for (const id of game.ballIds()) game.remove(id);

@@ -600,6 +600,67 @@ describe('phone controls', () => {
     await g.close();
   });
 
+  it("rotating cube: the flip round's end card is a sheet at the stage's foot that leaves the box in sight", async () => {
+    const g = await h.openGame('rotating-cube', { ...PHONE, query: { mode: 'flip' } });
+    // The round run out (20 s of world time, stepped while paused so the box holds still), lost. The
+    // page's hooks come after the kit's.
+    await g.waitFor(() => typeof (window.game as unknown as { startClock?: unknown }).startClock === 'function', null);
+    await g.page.evaluate(() => {
+      const game = window.game as unknown as { startClock(): void; paused: boolean; step(): void };
+      game.startClock();
+      game.paused = true;
+      for (let i = 0; i < 1260; i++) game.step();
+    });
+    const card = g.page.locator('[data-hud="win-banner"]');
+    await expect.poll(() => card.isVisible(), { timeout: 30_000 }).toBe(true);
+    const cardBox = (await card.boundingBox())!;
+    // The box's screen rectangle: the 8 corners of its mesh (the instanced box with vertex colours) projected.
+    const box = await g.page.evaluate(() => {
+      type V = { x: number; y: number; applyMatrix4(m: unknown): V; project(c: unknown): V };
+      type M = { multiplyMatrices(a: unknown, b: unknown): M };
+      const app = (
+        window.game as unknown as {
+          app: {
+            scene: { traverse(f: (o: unknown) => void): void };
+            camera: { position: { constructor: new (x: number, y: number, z: number) => V } };
+          };
+        }
+      ).app;
+      type Boxes = { matrixWorld: M & { constructor: new () => M }; getMatrixAt(i: number, m: M): void };
+      const meshes: Boxes[] = [];
+      app.scene.traverse((o) => {
+        const m = o as { isInstancedMesh?: boolean; geometry?: { type: string; attributes: { color?: unknown } } };
+        if (m.isInstancedMesh && m.geometry?.type === 'BoxGeometry' && m.geometry.attributes.color) meshes.push(o as Boxes);
+      });
+      const found = meshes[0]!;
+      const instance = new found.matrixWorld.constructor();
+      found.getMatrixAt(0, instance);
+      const world = new found.matrixWorld.constructor().multiplyMatrices(found.matrixWorld, instance);
+      const r = document.querySelector('canvas')!.getBoundingClientRect();
+      const xs: number[] = [],
+        ys: number[] = [];
+      for (const cx of [-0.5, 0.5])
+        for (const cy of [-0.5, 0.5])
+          for (const cz of [-0.5, 0.5]) {
+            const v = new app.camera.position.constructor(cx, cy, cz).applyMatrix4(world).project(app.camera);
+            xs.push(r.left + ((v.x + 1) / 2) * r.width);
+            ys.push(r.top + ((1 - v.y) / 2) * r.height);
+          }
+      return { left: Math.min(...xs), right: Math.max(...xs), top: Math.min(...ys), bottom: Math.max(...ys) };
+    });
+    // The box is on screen, and the card's rectangle does not meet its rectangle (in the middle of the
+    // stage the card covered it whole).
+    expect(box.bottom - box.top).toBeGreaterThan(20);
+    const apart =
+      cardBox.y >= box.bottom || cardBox.y + cardBox.height <= box.top || cardBox.x >= box.right || cardBox.x + cardBox.width <= box.left;
+    expect(apart, `card ${JSON.stringify(cardBox)}, box ${JSON.stringify(box)}`).toBe(true);
+    // Its buttons are in the screen, above the touch buttons' bar.
+    const retry = (await card.getByRole('button', { name: /try again/i }).boundingBox())!;
+    expect(retry.y + retry.height).toBeLessThanOrEqual(844);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
   it('rotating cube: the pad goal is on screen; a plain tap on the cube picks the floor cell under it, a drag from it flicks it that way', async () => {
     // A fixed layout (?seed=11: the first pad at x = 1.5 m, z = 0.2 m), room to roll left: a random one may put the pad by a wall.
     const g = await h.openGame('rotating-cube', { ...PHONE, query: { seed: 11 } });
@@ -756,10 +817,12 @@ describe('phone controls', () => {
       return p.count > 0 ? p.text : null;
     }, null);
     expect(pop).toContain('Pad 1 of 5');
-    // The pop fits the phone's width.
+    // The pop fits the phone's width, and it shows under the room's floor (below the floor's front
+    // edge, z 3 m, at any point of its rise): in the middle of the stage it hid the floor's back row.
     const popBox = (await g.page.locator('[data-hud="pad-pop"]').boundingBox())!;
     expect(popBox.x).toBeGreaterThanOrEqual(0);
     expect(popBox.x + popBox.width).toBeLessThanOrEqual(390);
+    expect(popBox.y).toBeGreaterThanOrEqual((await stillPageOf(g, 0, 0, 3)).y);
     // In the room the turn buttons are arrows: ◀ held rolls the cube towards the screen's left.
     const left = g.page.getByRole('button', { name: 'turn left', exact: true });
     expect(await left.textContent()).toBe('◀');
