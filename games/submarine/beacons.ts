@@ -278,16 +278,21 @@ export const LET_GO_EARLY = 2;
 /**
  * The brake hint's words for a boat whose centre lies `along` m short of its target along the
  * heading and that would glide `coast` m if Ahead were let go now (./helm.ts coastDistance):
- * "let go in N m" while the glide would stop more than `LET_GO_EARLY` short of the aim (the centre
- * `LET_GO_SHORT` before the beacon), "let go now" from then until it would overshoot the aim by
- * `LET_GO_LATE`, and "Astern now to stop" after that (Astern brakes harder than a glide).
- * @throws RangeError when `along` or `coast` is not finite or `coast` is negative.
+ * "let go at N m ahead" while the glide would stop more than `LET_GO_EARLY` short of the aim (the
+ * centre `LET_GO_SHORT` before the beacon), "let go now" from then until it would overshoot the aim
+ * by `LET_GO_LATE`, and "Astern now to stop" after that (Astern brakes harder than a glide). N is in
+ * the label's own figure, `ahead` (the level distance the line above it reads, "target B: 33 m
+ * ahead"; default `along`): the figure at which the glide stops on the aim, the moment "let go now"
+ * comes on, so the player compares two numbers on the label. (A count of metres still to go, "let go
+ * in 21 m" beside "33 m ahead", was read as "let go at 21 m ahead": 12 m early, 16 m short.)
+ * @throws RangeError when `along` or `ahead` is not finite or `coast` is not a finite number >= 0.
  */
-export function letGoHint(along: number, coast: number): string {
+export function letGoHint(along: number, coast: number, ahead = along): string {
   assertFinite('letGoHint', 'along', along);
+  assertFinite('letGoHint', 'ahead', ahead);
   if (!(Number.isFinite(coast) && coast >= 0)) throw new RangeError(`letGoHint: coast must be a finite number >= 0 m, got ${coast}`);
   const rest = along - LET_GO_SHORT - coast;
-  if (rest > LET_GO_EARLY) return `let go in ${Math.ceil(rest - LET_GO_EARLY)} m`;
+  if (rest > LET_GO_EARLY) return `let go at ${Math.max(0, Math.round(ahead - rest + LET_GO_EARLY))} m ahead`;
   if (rest >= -LET_GO_LATE) return 'let go now';
   return 'Astern now to stop';
 }

@@ -189,10 +189,10 @@ const BLAST_LIFE = 1.6;
 /** Game time the pointer last left an uncollected beacon for another, s (its label pulses for AIM_PULSE s). */
 let aimSwitchedAt = Number.NEGATIVE_INFINITY;
 /**
- * The pointer label's brake hint when the boat comes in on its target (./beacons.ts letGoHint): how
- * far on to let go of Ahead so that the glide (./helm.ts coastDistance, from the speed and throttle
- * now) stops the bow on the beacon, "let go now" there, or "Astern now to stop" once a glide would
- * carry the boat past it.
+ * The pointer label's brake hint when the boat comes in on its target (./beacons.ts letGoHint): at
+ * which of the label's own "N m ahead" figures to let go of Ahead so that the glide (./helm.ts
+ * coastDistance, from the speed and throttle now) stops the bow on the beacon, "let go now" there,
+ * or "Astern now to stop" once a glide would carry the boat past it.
  */
 /** The hint shows while the target is at most this far ahead along the heading, m, ... */
 const BRAKE_HINT_RANGE = 40;
@@ -2507,7 +2507,11 @@ function draw(): void {
     const offCourse = speed > 0 ? Math.abs((wx - hxw) * vy - (wy - hyw) * vx) / speed : Number.POSITIVE_INFINITY;
     // The words from the glide the boat would make if let go now: while the screw drives, when to let
     // go; gliding already, only a glide that would carry past the beacon is told (Astern).
-    const words = letGoHint(Math.max(0, along), coastDistance(c.Mass.value[e]!, Math.max(0, vAlong), state.throttle, world.dt));
+    const words = letGoHint(
+      Math.max(0, along),
+      coastDistance(c.Mass.value[e]!, Math.max(0, vAlong), state.throttle, world.dt),
+      Math.abs(wx - hxw),
+    );
     // The hint is level 1's lesson only: later levels leave the judging of the glide to the pilot
     // (and their currents carry a boat let go on, ./current.ts).
     const fast =
