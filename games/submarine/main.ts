@@ -114,6 +114,11 @@ const state = {
 };
 let handles: SubmarineHandles;
 let taken: boolean[] = [];
+/**
+ * What the skip banner, a skipped beacon's tag and the pointer to one say after "skipped: ": it
+ * still scores if collected before the finish, and how (the boat always faces ahead: Astern backs it).
+ */
+const SKIPPED_STILL_COUNTS = 'still counts, Astern back to it';
 /** Beacons passed and left behind uncollected (./beacons.ts passedBeacon): marked missed on the scene and counted in the goal line. */
 let missed: boolean[] = [];
 /** The target beacon the pointer warns is being left behind (./beacons.ts missWarning), -1 for none: a new warning chimes. */
@@ -454,6 +459,18 @@ addEventListener('blur', (e) => {
 /** Game time a Dive or Rise key was first held (s), NaN while none is. */
 let heaveKeySince = Number.NaN;
 
+/**
+ * The way the boat is going along x for the beacons' skip rules (./beacons.ts passedBeacon,
+ * chooseBeacon), m/s: its speed, but none ahead while Astern is held or the screw runs astern, so a player who turns
+ * back on the "skipped in N m" warning keeps the beacon while the Astern brake still slows the boat.
+ */
+function goingX(): number {
+  const vx = shell.world.components.Velocity.x[handles.hull]!;
+  return asternHeld || state.throttle < 0 ? Math.min(vx, 0) : vx;
+}
+/** Whether the last step had Astern held (and not Ahead): the boat is being turned back (goingX). */
+let asternHeld = false;
+
 /** The boat's horizontal speed now, m/s (positive ahead): a held Dive or Rise key asks for more under way (./helm.ts keyHeaveShare). */
 function speedAhead(): number {
   return shell.world.components.Velocity.x[handles.hull]!;
@@ -552,6 +569,7 @@ function stepWorld(world: PhysicsWorld): void {
   if (drive !== 0 && driveAsked() === 0) asked.drive = lastDrive;
   else if (drive !== 0) lastDrive = asked.drive ?? 1;
   const input = state.over ? NO_INPUT : seabedInput(state, asked);
+  asternHeld = input.astern && !input.ahead;
   if (!Number.isNaN(timed.letGoAt) && (state.mode === 'diving' || state.mode === 'rising'))
     state.holdY = releasedOrder(state.holdY, heaveTiming.orderAt(timed.letGoAt), state.mode);
   const vertical = input.dive === input.rise ? 0 : input.dive ? -1 : 1;
@@ -686,7 +704,7 @@ function stepWorld(world: PhysicsWorld): void {
       const last = i === lastBeacon(handles.beacons);
       // The target moves on to the next beacon along the course (./beacons.ts chooseBeacon), which the banner names.
       const target = aim.index;
-      aim.index = chooseBeacon(handles.beacons, taken, c.Position.x[e]!, c.Position.y[e]!, aim.index, i);
+      aim.index = chooseBeacon(handles.beacons, taken, c.Position.x[e]!, c.Position.y[e]!, aim.index, i, goingX());
       if (aim.index >= 0 && aim.index !== target) aimSwitchedAt = world.time;
       pickups.push({
         x: handles.beacons[2 * i]!,
@@ -720,16 +738,18 @@ function stepWorld(world: PhysicsWorld): void {
   // The target left far behind (./beacons.ts passedBeacon) hands over to the next one ahead, and the
   // banner says so: a skipped beacon costs its points, not minutes of backing.
   const target = aim.index;
-  if (target >= 0 && !taken[target] && passedBeacon(handles.beacons, target, c.Position.x[e]!)) {
-    aim.index = chooseBeacon(handles.beacons, taken, c.Position.x[e]!, c.Position.y[e]!, target);
-    if (aim.index !== target) {
+  if (target >= 0 && !taken[target] && passedBeacon(handles.beacons, target, c.Position.x[e]!, goingX())) {
+    aim.index = chooseBeacon(handles.beacons, taken, c.Position.x[e]!, c.Position.y[e]!, target, -1, goingX());
+    // A beacon skipped before (backed towards, then left again) is not announced twice.
+    if (aim.index !== target && missed[target]) aimSwitchedAt = world.time;
+    else if (aim.index !== target) {
       missed[target] = true;
       aimSwitchedAt = world.time;
       pickups.push({
         x: handles.beacons[2 * target]!,
         y: handles.beacons[2 * target + 1]!,
         time: world.time,
-        text: `Beacon ${beaconName(target)} skipped: back for it any time\nnext: ${beaconName(aim.index)}`,
+        text: `Beacon ${beaconName(target)} skipped: ${SKIPPED_STILL_COUNTS}\nnext: ${beaconName(aim.index)}`,
         passed: true,
       });
       // A falling two-note call: a loss, not a gain.
@@ -2135,7 +2155,7 @@ function draw(): void {
   const hxw = c.Position.x[e]!,
     hyw = c.Position.y[e]!;
   const before = aim.index;
-  aim.index = chooseBeacon(handles.beacons, taken, hxw, hyw, aim.index);
+  aim.index = chooseBeacon(handles.beacons, taken, hxw, hyw, aim.index, -1, goingX());
   // A new target (the last one collected): its label pulses (drawBeacons).
   if (before >= 0 && aim.index >= 0 && aim.index !== before) aimSwitchedAt = world.time;
   // The camera frames the hull and the beacon the pointer leads to: it centres between them and
@@ -2406,7 +2426,7 @@ function draw(): void {
       app.stage.addChild(tag);
     }
     tag.visible = true;
-    tag.text = missed[i] ? `${beaconName(i)} skipped: back for it` : `beacon ${beaconName(i)}`;
+    tag.text = missed[i] ? `${beaconName(i)} skipped: ${SKIPPED_STILL_COUNTS}` : `beacon ${beaconName(i)}`;
     tag.style.fill = missed[i] ? 0xff9e8a : 0xffe066;
     // Under its beacon, kept clear of the depth gauge (which would cut a tag under it to "beac"); off
     // the headlight's cone where it shows (a tag on the lit water reads as part of the beam): over
@@ -2492,6 +2512,8 @@ function draw(): void {
     // Heading for the finish with beacons skipped: collecting it ends the run, so the label says
     // which are still to fetch (backing to them first keeps every beacon in reach).
     const behind = taken.flatMap((t, i) => (t || i === aim.index ? [] : [beaconName(i)]));
+    // A skipped beacon backed to: it still counts.
+    if (missed[aim.index]) pointer.text += `\nskipped: ${SKIPPED_STILL_COUNTS}`;
     if (aim.index === lastBeacon(handles.beacons) && behind.length > 0)
       pointer.text += `\n⚠ finish ends the run: ${behind.join(', ')} left behind`;
     // Coming in fast with the target near ahead and on the course (no ridge line to show): the brake hint as the
@@ -2530,7 +2552,7 @@ function draw(): void {
     }
     if (brakeHint.on) pointer.text += `\n${words}`;
     // Moving away from the target left behind: how far on it counts as missed, with a low call once.
-    const left = state.over ? Number.NaN : missWarning(handles.beacons, aim.index, hxw, c.Velocity.x[e]!);
+    const left = state.over ? Number.NaN : missWarning(handles.beacons, aim.index, hxw, goingX());
     if (!Number.isNaN(left)) {
       pointer.text += `\n⚠ going away: Astern to fetch it (skipped in ${Math.ceil(left)} m)`;
       if (missWarned !== aim.index) sound.chime(392, 0.2);
