@@ -159,8 +159,11 @@ const GLOW_HINT = `● glow +${GLOW_POINTS} when touched, ×2 … ×${GLOW_STREA
 /** How long the first-time hint stays once a glow is in view, and after the first glow caught, s of game time. */
 const GLOW_HINT_LIFE = 8,
   GLOW_HINT_AFTER = 3;
-/** The first-time hint: the game time a glow was first in view and the first was caught (NaN: not yet), once a page. */
-const glowHint = { shown: Number.NaN, caught: Number.NaN };
+/**
+ * The first-time hint: the game time a glow was first in view and the first was caught (NaN: not
+ * yet), and whether it has been and gone (it shows once a page, runs again included).
+ */
+const glowHint = { shown: Number.NaN, caught: Number.NaN, gone: false };
 /** A glow the hull's centre has passed by this far along x without catching it is missed (the streak ends), m. */
 const GLOW_MISS = 10;
 /** The depth gauge's full scale: the deepest seabed of the course and 10 m, rounded up to 10 m. */
@@ -943,14 +946,19 @@ function showCurrentNote(t: number, u: number): void {
 }
 /**
  * Shows the first-time hint from the moment a glow is first in view (`inView`) at game time `t`, s,
- * for GLOW_HINT_LIFE s, and at least GLOW_HINT_AFTER s after the first glow caught; once a page.
+ * for GLOW_HINT_LIFE s, and at least GLOW_HINT_AFTER s after the first glow caught when that comes
+ * while it shows; once a page: gone, it never comes back (a first glow caught later, often after the
+ * first beacon, brought it back over the top third of a phone's water).
  */
 function showGlowHint(t: number, inView: boolean): void {
   if (inView && Number.isNaN(glowHint.shown)) glowHint.shown = t;
+  const caughtWhileShown = Number.isFinite(glowHint.caught) && glowHint.caught < glowHint.shown + GLOW_HINT_LIFE;
   const on =
+    !glowHint.gone &&
     !state.over &&
     Number.isFinite(glowHint.shown) &&
-    (t - glowHint.shown < GLOW_HINT_LIFE || (Number.isFinite(glowHint.caught) && t - glowHint.caught < GLOW_HINT_AFTER));
+    (t - glowHint.shown < GLOW_HINT_LIFE || (caughtWhileShown && t - glowHint.caught < GLOW_HINT_AFTER));
+  if (!on && Number.isFinite(glowHint.shown)) glowHint.gone = true;
   const display = on ? 'block' : 'none';
   if (glowNote.style.display !== display) glowNote.style.display = display;
 }
