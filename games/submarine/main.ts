@@ -115,10 +115,11 @@ const state = {
 let handles: SubmarineHandles;
 let taken: boolean[] = [];
 /**
- * What the skip banner, a skipped beacon's tag and the pointer to one say after "skipped: ": it
- * still scores if collected before the finish, and how (the boat always faces ahead: Astern backs it).
+ * What the skip banner and the pointer to a skipped beacon tell to do after "skipped: still counts"
+ * (its tag says that much): it scores if collected before the finish, and the boat always faces
+ * ahead, so Astern backs it there. Lines short enough for a phone's banner.
  */
-const SKIPPED_STILL_COUNTS = 'still counts, Astern back to it';
+const ASTERN_BACK = 'Astern back to it';
 /** Beacons passed and left behind uncollected (./beacons.ts passedBeacon): marked missed on the scene and counted in the goal line. */
 let missed: boolean[] = [];
 /** The target beacon the pointer warns is being left behind (./beacons.ts missWarning), -1 for none: a new warning chimes. */
@@ -752,7 +753,7 @@ function stepWorld(world: PhysicsWorld): void {
         x: handles.beacons[2 * target]!,
         y: handles.beacons[2 * target + 1]!,
         time: world.time,
-        text: `Beacon ${beaconName(target)} skipped: ${SKIPPED_STILL_COUNTS}\nnext: ${beaconName(aim.index)}`,
+        text: `Beacon ${beaconName(target)} skipped: still counts\n${ASTERN_BACK}, or on to ${beaconName(aim.index)}`,
         passed: true,
       });
       // A falling two-note call: a loss, not a gain.
@@ -2434,7 +2435,7 @@ function draw(): void {
       app.stage.addChild(tag);
     }
     tag.visible = true;
-    tag.text = missed[i] ? `${beaconName(i)} skipped: ${SKIPPED_STILL_COUNTS}` : `beacon ${beaconName(i)}`;
+    tag.text = missed[i] ? `${beaconName(i)} skipped: still counts` : `beacon ${beaconName(i)}`;
     tag.style.fill = missed[i] ? 0xff9e8a : 0xffe066;
     // Under its beacon, kept clear of the depth gauge (which would cut a tag under it to "beac"); off
     // the headlight's cone where it shows (a tag on the lit water reads as part of the beam): over
@@ -2521,7 +2522,7 @@ function draw(): void {
     // which are still to fetch (backing to them first keeps every beacon in reach).
     const behind = taken.flatMap((t, i) => (t || i === aim.index ? [] : [beaconName(i)]));
     // A skipped beacon backed to: it still counts.
-    if (missed[aim.index]) pointer.text += `\nskipped: ${SKIPPED_STILL_COUNTS}`;
+    if (missed[aim.index]) pointer.text += `\nskipped: still counts, ${ASTERN_BACK}`;
     if (aim.index === lastBeacon(handles.beacons) && behind.length > 0)
       pointer.text += `\n⚠ finish ends the run: ${behind.join(', ')} left behind`;
     // Coming in fast with the target near ahead and on the course (no ridge line to show): the brake hint as the
