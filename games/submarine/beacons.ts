@@ -135,29 +135,53 @@ export function missWarning(beacons: ArrayLike<number>, i: number, x: number, vx
 }
 
 /**
- * Whether beacon `i` has been passed by a hull whose centre is at `x`, m: it lies more than
- * `BEACON_PASSED` behind along x and is not the last beacon along the course (the finish is never
- * passed). `beacons`: (x, y) pairs, m.
- * @throws RangeError when `x` is not finite or `i` is not an index of `beacons`.
+ * The speed along x above which the boat counts as moving on ahead (a beacon behind it by more than
+ * `BEACON_PASSED` is passed, `passedBeacon`) or, below its negative, as backing (towards the beacons
+ * behind it, `chooseBeacon`), m/s. Slower it is stopping or stopped: nothing changes.
  */
-export function passedBeacon(beacons: ArrayLike<number>, i: number, x: number): boolean {
+export const MOVING_ON = 0.5;
+
+/**
+ * Whether beacon `i` has been passed by a hull whose centre is at `x`, m, moving along x at `vx`
+ * m/s (default 1: moving on ahead): it lies more than `BEACON_PASSED` behind along x, the boat is
+ * moving on away from it (`vx` > `MOVING_ON`: never while it backs towards it or has stopped, so a
+ * player who turns back on the warning keeps the beacon), and it is not the last beacon along the
+ * course (the finish is never passed). `beacons`: (x, y) pairs, m.
+ * @throws RangeError when `x` or `vx` is not finite or `i` is not an index of `beacons`.
+ */
+export function passedBeacon(beacons: ArrayLike<number>, i: number, x: number, vx = 1): boolean {
   assertFinite('passedBeacon', 'x', x);
+  assertFinite('passedBeacon', 'vx', vx);
   if (!(Number.isInteger(i) && i >= 0 && i < beacons.length / 2)) throw new RangeError(`passedBeacon: i must be a beacon index, got ${i}`);
-  return x - beacons[2 * i]! > BEACON_PASSED && i !== lastBeacon(beacons);
+  return x - beacons[2 * i]! > BEACON_PASSED && vx > MOVING_ON && i !== lastBeacon(beacons);
 }
 
 /**
- * The beacon the pointer leads to from the hull at (x, y), m. The target stays ahead of the boat:
- * beacons passed (`passedBeacon`: far behind, not the finish) are never chosen while another is
- * left. With `justTaken` (a beacon collected this step, its index) the next uncollected one along
- * the course after it (course order: the first beacon, then by x), so a boat that passes beacon A
- * and collects C is led on, not back to A behind it. Otherwise `current` while it is uncollected and
- * not passed (it is held, however near another one comes); a current one passed hands over to the
- * first one left along the course; with no current one (-1, out of range or collected), the nearest
- * one left. Only passed ones left: the first of those along the course. -1 when all are collected.
+ * How far ahead of the hull its target may lie while the boat backs and stays its target, m: a
+ * player who braked short of it with Astern and backs on a little keeps it; backing on further, the
+ * target turns to the beacon behind the boat (`chooseBeacon`). Two ring widths and a hull.
+ */
+export const TURNED_BACK = 2 * BEACON_CATCH + SUBMARINE.length;
+
+/**
+ * The beacon the pointer leads to from the hull at (x, y), m, moving along x at `vx` m/s. The target
+ * is the beacon the boat is heading for. Backing (`vx` < -`MOVING_ON`), that is the nearest
+ * uncollected beacon behind the hull (its x less than the hull's) when a beacon was collected this
+ * step, or the target is collected or lies more than `TURNED_BACK` ahead: a player backing to fetch
+ * a skipped beacon who collects another on the way is led on to the skipped one, not to the next
+ * one ahead (one who backs a little after braking short of the target keeps it). Otherwise
+ * the target stays ahead of the boat: beacons passed (`passedBeacon`: far behind with the boat
+ * moving on, not the finish) are never chosen while another is left. With `justTaken` (a beacon
+ * collected this step, its index) the next uncollected one along the course after it (course order:
+ * the first beacon, then by x), so a boat that passes beacon A and collects C is led on, not back to
+ * A behind it. Otherwise `current` while it is uncollected and not passed (it is held, however near
+ * another one comes); a current one passed hands over to the first one left along the course; with
+ * no current one (-1, out of range or collected), the nearest one left. Only passed ones left: the
+ * first of those along the course. -1 when all are collected.
  * @param beacons (x, y) pairs, m.
  * @param taken Whether each beacon has been collected.
  * @param justTaken the beacon collected this step, or -1 (default) when none was.
+ * @param vx the hull's speed along x, m/s (default 1: moving on ahead).
  */
 export function chooseBeacon(
   beacons: ArrayLike<number>,
@@ -166,9 +190,17 @@ export function chooseBeacon(
   y: number,
   current: number,
   justTaken = -1,
+  vx = 1,
 ): number {
   const valid = (i: number) => i >= 0 && i < taken.length;
-  const open = (i: number) => !taken[i] && !passedBeacon(beacons, i, x);
+  const behindHull = (i: number) => beacons[2 * i]! < x;
+  const held = !valid(justTaken) && valid(current) && !taken[current];
+  if (vx < -MOVING_ON && !(held && beacons[2 * current]! - x <= TURNED_BACK)) {
+    let back = -1;
+    for (let i = 0; i < taken.length; i++) if (!taken[i] && behindHull(i) && (back < 0 || beacons[2 * i]! > beacons[2 * back]!)) back = i;
+    if (back >= 0) return back;
+  }
+  const open = (i: number) => !taken[i] && !passedBeacon(beacons, i, x, vx);
   if (!valid(justTaken) && valid(current) && open(current)) return current;
   const passedOn = !valid(justTaken) && valid(current) && !taken[current];
   if (valid(justTaken) || passedOn) {
@@ -278,16 +310,21 @@ export const LET_GO_EARLY = 2;
 /**
  * The brake hint's words for a boat whose centre lies `along` m short of its target along the
  * heading and that would glide `coast` m if Ahead were let go now (./helm.ts coastDistance):
- * "let go in N m" while the glide would stop more than `LET_GO_EARLY` short of the aim (the centre
- * `LET_GO_SHORT` before the beacon), "let go now" from then until it would overshoot the aim by
- * `LET_GO_LATE`, and "Astern now to stop" after that (Astern brakes harder than a glide).
- * @throws RangeError when `along` or `coast` is not finite or `coast` is negative.
+ * "let go at N m ahead" while the glide would stop more than `LET_GO_EARLY` short of the aim (the
+ * centre `LET_GO_SHORT` before the beacon), "let go now" from then until it would overshoot the aim
+ * by `LET_GO_LATE`, and "Astern now to stop" after that (Astern brakes harder than a glide). N is in
+ * the label's own figure, `ahead` (the level distance the line above it reads, "target B: 33 m
+ * ahead"; default `along`): the figure at which the glide stops on the aim, the moment "let go now"
+ * comes on, so the player compares two numbers on the label. (A count of metres still to go, "let go
+ * in 21 m" beside "33 m ahead", was read as "let go at 21 m ahead": 12 m early, 16 m short.)
+ * @throws RangeError when `along` or `ahead` is not finite or `coast` is not a finite number >= 0.
  */
-export function letGoHint(along: number, coast: number): string {
+export function letGoHint(along: number, coast: number, ahead = along): string {
   assertFinite('letGoHint', 'along', along);
+  assertFinite('letGoHint', 'ahead', ahead);
   if (!(Number.isFinite(coast) && coast >= 0)) throw new RangeError(`letGoHint: coast must be a finite number >= 0 m, got ${coast}`);
   const rest = along - LET_GO_SHORT - coast;
-  if (rest > LET_GO_EARLY) return `let go in ${Math.ceil(rest - LET_GO_EARLY)} m`;
+  if (rest > LET_GO_EARLY) return `let go at ${Math.max(0, Math.round(ahead - rest + LET_GO_EARLY))} m ahead`;
   if (rest >= -LET_GO_LATE) return 'let go now';
   return 'Astern now to stop';
 }

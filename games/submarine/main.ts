@@ -114,6 +114,12 @@ const state = {
 };
 let handles: SubmarineHandles;
 let taken: boolean[] = [];
+/**
+ * What the skip banner and the pointer to a skipped beacon tell to do after "skipped: still counts"
+ * (its tag says that much): it scores if collected before the finish, and the boat always faces
+ * ahead, so Astern backs it there. Lines short enough for a phone's banner.
+ */
+const ASTERN_BACK = 'Astern back to it';
 /** Beacons passed and left behind uncollected (./beacons.ts passedBeacon): marked missed on the scene and counted in the goal line. */
 let missed: boolean[] = [];
 /** The target beacon the pointer warns is being left behind (./beacons.ts missWarning), -1 for none: a new warning chimes. */
@@ -154,8 +160,11 @@ const GLOW_HINT = `● glow +${GLOW_POINTS} when touched, ×2 … ×${GLOW_STREA
 /** How long the first-time hint stays once a glow is in view, and after the first glow caught, s of game time. */
 const GLOW_HINT_LIFE = 8,
   GLOW_HINT_AFTER = 3;
-/** The first-time hint: the game time a glow was first in view and the first was caught (NaN: not yet), once a page. */
-const glowHint = { shown: Number.NaN, caught: Number.NaN };
+/**
+ * The first-time hint: the game time a glow was first in view and the first was caught (NaN: not
+ * yet), and whether it has been and gone (it shows once a page, runs again included).
+ */
+const glowHint = { shown: Number.NaN, caught: Number.NaN, gone: false };
 /** A glow the hull's centre has passed by this far along x without catching it is missed (the streak ends), m. */
 const GLOW_MISS = 10;
 /** The depth gauge's full scale: the deepest seabed of the course and 10 m, rounded up to 10 m. */
@@ -189,10 +198,10 @@ const BLAST_LIFE = 1.6;
 /** Game time the pointer last left an uncollected beacon for another, s (its label pulses for AIM_PULSE s). */
 let aimSwitchedAt = Number.NEGATIVE_INFINITY;
 /**
- * The pointer label's brake hint when the boat comes in on its target (./beacons.ts letGoHint): how
- * far on to let go of Ahead so that the glide (./helm.ts coastDistance, from the speed and throttle
- * now) stops the bow on the beacon, "let go now" there, or "Astern now to stop" once a glide would
- * carry the boat past it.
+ * The pointer label's brake hint when the boat comes in on its target (./beacons.ts letGoHint): at
+ * which of the label's own "N m ahead" figures to let go of Ahead so that the glide (./helm.ts
+ * coastDistance, from the speed and throttle now) stops the bow on the beacon, "let go now" there,
+ * or "Astern now to stop" once a glide would carry the boat past it.
  */
 /** The hint shows while the target is at most this far ahead along the heading, m, ... */
 const BRAKE_HINT_RANGE = 40;
@@ -454,6 +463,18 @@ addEventListener('blur', (e) => {
 /** Game time a Dive or Rise key was first held (s), NaN while none is. */
 let heaveKeySince = Number.NaN;
 
+/**
+ * The way the boat is going along x for the beacons' skip rules (./beacons.ts passedBeacon,
+ * chooseBeacon), m/s: its speed, but none ahead while Astern is held or the screw runs astern, so a player who turns
+ * back on the "skipped in N m" warning keeps the beacon while the Astern brake still slows the boat.
+ */
+function goingX(): number {
+  const vx = shell.world.components.Velocity.x[handles.hull]!;
+  return asternHeld || state.throttle < 0 ? Math.min(vx, 0) : vx;
+}
+/** Whether the last step had Astern held (and not Ahead): the boat is being turned back (goingX). */
+let asternHeld = false;
+
 /** The boat's horizontal speed now, m/s (positive ahead): a held Dive or Rise key asks for more under way (./helm.ts keyHeaveShare). */
 function speedAhead(): number {
   return shell.world.components.Velocity.x[handles.hull]!;
@@ -552,6 +573,7 @@ function stepWorld(world: PhysicsWorld): void {
   if (drive !== 0 && driveAsked() === 0) asked.drive = lastDrive;
   else if (drive !== 0) lastDrive = asked.drive ?? 1;
   const input = state.over ? NO_INPUT : seabedInput(state, asked);
+  asternHeld = input.astern && !input.ahead;
   if (!Number.isNaN(timed.letGoAt) && (state.mode === 'diving' || state.mode === 'rising'))
     state.holdY = releasedOrder(state.holdY, heaveTiming.orderAt(timed.letGoAt), state.mode);
   const vertical = input.dive === input.rise ? 0 : input.dive ? -1 : 1;
@@ -686,7 +708,7 @@ function stepWorld(world: PhysicsWorld): void {
       const last = i === lastBeacon(handles.beacons);
       // The target moves on to the next beacon along the course (./beacons.ts chooseBeacon), which the banner names.
       const target = aim.index;
-      aim.index = chooseBeacon(handles.beacons, taken, c.Position.x[e]!, c.Position.y[e]!, aim.index, i);
+      aim.index = chooseBeacon(handles.beacons, taken, c.Position.x[e]!, c.Position.y[e]!, aim.index, i, goingX());
       if (aim.index >= 0 && aim.index !== target) aimSwitchedAt = world.time;
       pickups.push({
         x: handles.beacons[2 * i]!,
@@ -720,16 +742,18 @@ function stepWorld(world: PhysicsWorld): void {
   // The target left far behind (./beacons.ts passedBeacon) hands over to the next one ahead, and the
   // banner says so: a skipped beacon costs its points, not minutes of backing.
   const target = aim.index;
-  if (target >= 0 && !taken[target] && passedBeacon(handles.beacons, target, c.Position.x[e]!)) {
-    aim.index = chooseBeacon(handles.beacons, taken, c.Position.x[e]!, c.Position.y[e]!, target);
-    if (aim.index !== target) {
+  if (target >= 0 && !taken[target] && passedBeacon(handles.beacons, target, c.Position.x[e]!, goingX())) {
+    aim.index = chooseBeacon(handles.beacons, taken, c.Position.x[e]!, c.Position.y[e]!, target, -1, goingX());
+    // A beacon skipped before (backed towards, then left again) is not announced twice.
+    if (aim.index !== target && missed[target]) aimSwitchedAt = world.time;
+    else if (aim.index !== target) {
       missed[target] = true;
       aimSwitchedAt = world.time;
       pickups.push({
         x: handles.beacons[2 * target]!,
         y: handles.beacons[2 * target + 1]!,
         time: world.time,
-        text: `Beacon ${beaconName(target)} skipped: back for it any time\nnext: ${beaconName(aim.index)}`,
+        text: `Beacon ${beaconName(target)} skipped: still counts\n${ASTERN_BACK}, or on to ${beaconName(aim.index)}`,
         passed: true,
       });
       // A falling two-note call: a loss, not a gain.
@@ -923,14 +947,19 @@ function showCurrentNote(t: number, u: number): void {
 }
 /**
  * Shows the first-time hint from the moment a glow is first in view (`inView`) at game time `t`, s,
- * for GLOW_HINT_LIFE s, and at least GLOW_HINT_AFTER s after the first glow caught; once a page.
+ * for GLOW_HINT_LIFE s, and at least GLOW_HINT_AFTER s after the first glow caught when that comes
+ * while it shows; once a page: gone, it never comes back (a first glow caught later, often after the
+ * first beacon, brought it back over the top third of a phone's water).
  */
 function showGlowHint(t: number, inView: boolean): void {
   if (inView && Number.isNaN(glowHint.shown)) glowHint.shown = t;
+  const caughtWhileShown = Number.isFinite(glowHint.caught) && glowHint.caught < glowHint.shown + GLOW_HINT_LIFE;
   const on =
+    !glowHint.gone &&
     !state.over &&
     Number.isFinite(glowHint.shown) &&
-    (t - glowHint.shown < GLOW_HINT_LIFE || (Number.isFinite(glowHint.caught) && t - glowHint.caught < GLOW_HINT_AFTER));
+    (t - glowHint.shown < GLOW_HINT_LIFE || (caughtWhileShown && t - glowHint.caught < GLOW_HINT_AFTER));
+  if (!on && Number.isFinite(glowHint.shown)) glowHint.gone = true;
   const display = on ? 'block' : 'none';
   if (glowNote.style.display !== display) glowNote.style.display = display;
 }
@@ -2135,7 +2164,7 @@ function draw(): void {
   const hxw = c.Position.x[e]!,
     hyw = c.Position.y[e]!;
   const before = aim.index;
-  aim.index = chooseBeacon(handles.beacons, taken, hxw, hyw, aim.index);
+  aim.index = chooseBeacon(handles.beacons, taken, hxw, hyw, aim.index, -1, goingX());
   // A new target (the last one collected): its label pulses (drawBeacons).
   if (before >= 0 && aim.index >= 0 && aim.index !== before) aimSwitchedAt = world.time;
   // The camera frames the hull and the beacon the pointer leads to: it centres between them and
@@ -2406,7 +2435,7 @@ function draw(): void {
       app.stage.addChild(tag);
     }
     tag.visible = true;
-    tag.text = missed[i] ? `${beaconName(i)} skipped: back for it` : `beacon ${beaconName(i)}`;
+    tag.text = missed[i] ? `${beaconName(i)} skipped: still counts` : `beacon ${beaconName(i)}`;
     tag.style.fill = missed[i] ? 0xff9e8a : 0xffe066;
     // Under its beacon, kept clear of the depth gauge (which would cut a tag under it to "beac"); off
     // the headlight's cone where it shows (a tag on the lit water reads as part of the beam): over
@@ -2492,6 +2521,8 @@ function draw(): void {
     // Heading for the finish with beacons skipped: collecting it ends the run, so the label says
     // which are still to fetch (backing to them first keeps every beacon in reach).
     const behind = taken.flatMap((t, i) => (t || i === aim.index ? [] : [beaconName(i)]));
+    // A skipped beacon backed to: it still counts.
+    if (missed[aim.index]) pointer.text += `\nskipped: still counts, ${ASTERN_BACK}`;
     if (aim.index === lastBeacon(handles.beacons) && behind.length > 0)
       pointer.text += `\n⚠ finish ends the run: ${behind.join(', ')} left behind`;
     // Coming in fast with the target near ahead and on the course (no ridge line to show): the brake hint as the
@@ -2507,7 +2538,11 @@ function draw(): void {
     const offCourse = speed > 0 ? Math.abs((wx - hxw) * vy - (wy - hyw) * vx) / speed : Number.POSITIVE_INFINITY;
     // The words from the glide the boat would make if let go now: while the screw drives, when to let
     // go; gliding already, only a glide that would carry past the beacon is told (Astern).
-    const words = letGoHint(Math.max(0, along), coastDistance(c.Mass.value[e]!, Math.max(0, vAlong), state.throttle, world.dt));
+    const words = letGoHint(
+      Math.max(0, along),
+      coastDistance(c.Mass.value[e]!, Math.max(0, vAlong), state.throttle, world.dt),
+      Math.abs(wx - hxw),
+    );
     // The hint is level 1's lesson only: later levels leave the judging of the glide to the pilot
     // (and their currents carry a boat let go on, ./current.ts).
     const fast =
@@ -2526,7 +2561,7 @@ function draw(): void {
     }
     if (brakeHint.on) pointer.text += `\n${words}`;
     // Moving away from the target left behind: how far on it counts as missed, with a low call once.
-    const left = state.over ? Number.NaN : missWarning(handles.beacons, aim.index, hxw, c.Velocity.x[e]!);
+    const left = state.over ? Number.NaN : missWarning(handles.beacons, aim.index, hxw, goingX());
     if (!Number.isNaN(left)) {
       pointer.text += `\n⚠ going away: Astern to fetch it (skipped in ${Math.ceil(left)} m)`;
       if (missWarned !== aim.index) sound.chime(392, 0.2);

@@ -1343,7 +1343,7 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
       await g.runFrames(3, { unpause: false });
       return g.page.evaluate(() => (window.game as unknown as P).beaconPointer());
     };
-    const hint = /\n(let go in \d+ m|let go now|Astern now to stop)$/;
+    const hint = /\n(let go at \d+ m ahead|let go now|Astern now to stop)$/;
     expect((await at(30, 2)).text).not.toMatch(hint); // slow
     expect((await at(70, 8)).text).not.toMatch(hint); // far
     expect((await at(30, 8, 0, 0)).text).not.toMatch(hint); // gliding already, and it stops short: nothing to tell
@@ -1354,14 +1354,14 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     for (const above of [20, depth - 0.5]) expect((await at(30, 8, above)).text, `${above} m above`).not.toMatch(hint);
     // At full speed (8 m/s) the glide is about 5 m (./helm.ts coastDistance, checked against the
     // physics in test/games/submarine-helm.test.ts): 30 m short, the bow is to stop on the beacon
-    // 24 m on, so let go in about 17 m; 12 m short, now.
+    // 24 m on, so let go at about 13 m ahead (the label's own figure, as it reads then); 12 m short, now.
     for (let i = 1; i <= 3; i++) {
       const p = await at(30, 8);
       expect(p.index).toBe(0);
-      const m = /^target A: 30 m ahead\nlet go in (\d+) m$/.exec(p.text);
+      const m = /^target A: 30 m ahead\nlet go at (\d+) m ahead$/.exec(p.text);
       expect(m, p.text).not.toBeNull();
-      expect(Number(m![1])).toBeGreaterThan(13);
-      expect(Number(m![1])).toBeLessThan(21);
+      expect(Number(m![1])).toBeGreaterThan(10);
+      expect(Number(m![1])).toBeLessThan(16);
       expect(p.brakeHints).toBe(2 * i - 1);
       expect((await at(30, 2)).text).toBe('target A: 30 m ahead');
       expect((await at(12, 8)).text).toBe('target A: 12 m ahead\nlet go now');

@@ -4,8 +4,8 @@
  * down or up at 5 m/s, as the game's boat) sees the distance fall until it collects each beacon.
  */
 
-import { createPhysicsWorld } from '@bitphysics/physics';
-import { SUBMARINE, seabedHeight, submarine } from '@bitphysics/projects';
+import { createPhysicsWorld, step } from '@bitphysics/physics';
+import { SUBMARINE, SUBMARINE_NEUTRAL_FILL, seabedHeight, submarine } from '@bitphysics/projects';
 import { describe, expect, it } from 'vitest';
 import {
   BEACON_CATCH,
@@ -23,7 +23,9 @@ import {
   passedBeacon,
   RIDGE_WARNING,
   seabedBetween,
+  TURNED_BACK,
 } from '../../games/submarine/beacons';
+import { createHelmState, NO_INPUT, steer } from '../../games/submarine/helm';
 
 describe('submarine beacon pointer', () => {
   it('holds its target until it is collected, however near another passes, then takes the nearest left', () => {
@@ -116,6 +118,63 @@ describe('submarine beacon pointer', () => {
     expect(passedBeacon(beacons, 1, 170)).toBe(false);
     expect(() => passedBeacon(beacons, 6, 0)).toThrow(/passedBeacon: i/);
     expect(() => passedBeacon(beacons, 0, Number.NaN)).toThrow(/passedBeacon/);
+  });
+
+  it('reversing: a beacon is never skipped while the boat backs towards it or has stopped, and the target is the beacon it backs to', () => {
+    // Issue 34: backing to fetch a skipped A the stranger collected B and the target moved on to C,
+    // ahead; C was marked skipped though the player had reversed on the warning.
+    const beacons = [40, -20, 160, -40, 280, -30, 400, -50, 510, -35, 620, -45];
+    // C overshot by more than BEACON_PASSED: passed moving on ahead, not backing, nor stopped.
+    expect(passedBeacon(beacons, 2, 280 + BEACON_PASSED + 5, 3)).toBe(true);
+    expect(passedBeacon(beacons, 2, 280 + BEACON_PASSED + 5, -2)).toBe(false);
+    expect(passedBeacon(beacons, 2, 280 + BEACON_PASSED + 5, 0)).toBe(false);
+    expect(() => passedBeacon(beacons, 2, 0, Number.NaN)).toThrow(/passedBeacon: vx/);
+    const taken = [true, false, false, false, false, false];
+    expect(chooseBeacon(beacons, taken, 280 + BEACON_PASSED + 5, -40, 2, -1, -2)).toBe(2);
+    expect(chooseBeacon(beacons, taken, 280 + BEACON_PASSED + 5, -40, 2, -1, 3)).toBe(3);
+    // B skipped (the target is D, ahead); backing from 330 m towards B the target is C, the nearest
+    // beacon behind; C collected on the way, the target is B, not D ahead.
+    expect(chooseBeacon(beacons, taken, 330, -40, 3, -1, -3)).toBe(2);
+    expect(chooseBeacon(beacons, [true, false, true, false, false, false], 275, -30, 2, 2, -3)).toBe(1);
+    // Going on ahead again, the skipped beacon far behind hands over to the first ahead.
+    expect(chooseBeacon(beacons, [true, false, true, false, false, false], 260, -30, 1, -1, 3)).toBe(3);
+    // Backing a little after braking short of the target (within TURNED_BACK of it): it stays.
+    expect(chooseBeacon(beacons, taken, 400 - 20, -50, 3, -1, -2)).toBe(3);
+    expect(chooseBeacon(beacons, taken, 400 - TURNED_BACK - 5, -50, 3, -1, -2)).toBe(2);
+  });
+
+  it('reversing on the "skipped in 1 m" warning at full ahead keeps the target, and the boat backs onto it', () => {
+    // The helm and the sea stepped in full: the boat runs at full ahead past its target C, and on
+    // the warning's last metre Astern is held (the page counts a boat going astern as not moving on:
+    // main.ts goingX). C must never count as passed, and backing takes the hull into its ring (on the
+    // way out the hull runs through it from the start: only the way back is counted).
+    const world = createPhysicsWorld(submarine.worldOptions());
+    const h = submarine.build(world, { seed: 1, count: 0, fill: SUBMARINE_NEUTRAL_FILL, position: [0, -30] });
+    world.components.FluidRegion.surface.fill(0);
+    h.seabed.y.fill(-1000);
+    const helm = createHelmState(SUBMARINE_NEUTRAL_FILL),
+      c = world.components,
+      e = h.hull;
+    const course = [-200, -30, -100, -30, 0, -30, 400, -30];
+    const going = () => (!Number.isNaN(warned) || helm.throttle < 0 ? Math.min(c.Velocity.x[e]!, 0) : c.Velocity.x[e]!);
+    let warned = Number.NaN,
+      passed = false,
+      caught = false,
+      furthest = 0;
+    for (let i = 0; i < 60 * 40 && !caught; i++) {
+      const x = c.Position.x[e]!;
+      const left = missWarning(course, 2, x, going());
+      if (Number.isNaN(warned) && left <= 1) warned = x;
+      steer(world, h, { ...NO_INPUT, ahead: Number.isNaN(warned), astern: !Number.isNaN(warned) }, helm);
+      step(world);
+      passed ||= passedBeacon(course, 2, c.Position.x[e]!, going());
+      furthest = Math.max(furthest, c.Position.x[e]!);
+      caught = !Number.isNaN(warned) && catchesBeacon(c.Position.x[e]!, c.Position.y[e]!, c.Angle.value[e]!, 0, -30);
+    }
+    expect(warned).toBeGreaterThan(BEACON_PASSED - 1.5);
+    expect(passed).toBe(false);
+    expect(caught).toBe(true);
+    console.log(`warned at ${warned.toFixed(1)} m past C, Astern: furthest ${furthest.toFixed(1)} m past, back in its ring`);
   });
 
   it('an overshoot of 60 m past the first beacon (a key held seconds too long) is recovered: following the pointer collects 6/6 before the finish', () => {

@@ -619,4 +619,60 @@ describe('submarine dive planes', () => {
       expect(catchesBeacon(x, c.Position.y[e]!, c.Angle.value[e]!, bx, by)).toBe(true);
     }
   });
+
+  it('"let go at N m ahead": let go when the label\'s figure reads N, the boat stops within 3 m of its aim and collects the beacon, at 3 to 8 m/s', () => {
+    // Issue 34: the label read "target B: 33 m ahead / let go in 21 m"; the stranger let go at
+    // "21 m ahead" (12 m on) and stopped 16 m short. Now the hint names the label's own figure. The
+    // player reads N once, 38 m short (the hint's range is 40 m), holds Ahead until the label's
+    // figure (the level distance, rounded as the page shows it) reads N, then lets go. Tolerance
+    // 3 m, as for "let go now": N is where "let go now" comes on, up to LET_GO_EARLY (2 m) short of
+    // the aim, plus half a metre of the figure's rounding and the glide model's 0.5 m.
+    const report: string[] = [];
+    for (const drive of [0.4, 0.7, 1]) {
+      const b = boat(-30);
+      const c = b.world.components,
+        e = b.h.hull;
+      run(b, { ahead: true, drive }, 10);
+      const bx = c.Position.x[e]! + 45,
+        by = c.Position.y[e]!;
+      let n = Number.NaN,
+        oldN = Number.NaN;
+      while (Number.isNaN(n)) {
+        const along = bx - c.Position.x[e]!;
+        if (along < 38) {
+          const coast = coastDistance(c.Mass.value[e]!, c.Velocity.x[e]!, b.helm.throttle, b.world.dt);
+          const m = /^let go at (\d+) m ahead$/.exec(letGoHint(along, coast));
+          expect(m, `drive ${drive}`).not.toBeNull();
+          n = Number(m![1]);
+          // The old words, "let go in M m" (metres still to go), read as the label's figure.
+          oldN = Math.ceil(along - LET_GO_SHORT - coast - 2);
+        } else run(b, { ahead: true, drive }, b.world.dt);
+      }
+      const speed = c.Velocity.x[e]!;
+      const glide = (at: number) => {
+        const world = createPhysicsWorld(submarine.worldOptions());
+        const h = submarine.build(world, { seed: 1, count: 0, fill: SUBMARINE_NEUTRAL_FILL, position: [c.Position.x[e]!, by] });
+        world.components.FluidRegion.surface.fill(0);
+        h.seabed.y.fill(-1000);
+        const twin = { world, h, helm: { ...b.helm } };
+        world.components.Velocity.x[h.hull] = speed;
+        while (Math.round(bx - world.components.Position.x[h.hull]!) > at) run(twin, { ahead: true, drive }, world.dt);
+        run(twin, {}, 8);
+        const x = world.components.Position.x[h.hull]!;
+        return {
+          short: bx - LET_GO_SHORT - x,
+          caught: catchesBeacon(x, world.components.Position.y[h.hull]!, world.components.Angle.value[h.hull]!, bx, by),
+        };
+      };
+      const now = glide(n),
+        before = glide(oldN);
+      report.push(
+        `${speed.toFixed(1)} m/s: let go at ${n} m ahead, stopped ${now.short.toFixed(1)} m short of the aim ` +
+          `(old "let go in ${oldN} m" read as the figure: ${before.short.toFixed(1)} m short, caught ${before.caught})`,
+      );
+      expect(Math.abs(now.short), report.at(-1)).toBeLessThan(3);
+      expect(now.caught, report.at(-1)).toBe(true);
+    }
+    console.log(report.join('\n'));
+  });
 });
