@@ -180,6 +180,141 @@ describe('black hole', () => {
   });
 });
 
+describe('black hole, words off the holes and the continue panel', () => {
+  it("the path's words, the edge warning and the caption of a fall cover no hole, nor the continue panel after the last life", async () => {
+    // The issue this answers: "predicted path, next 3 s" was drawn over level 1's hole, the edge
+    // warning over the hole the path was about to fall into, and a fading "Swallowed!" over the
+    // game-over panel. Paused and set up by hand, so nothing depends on the machine's speed.
+    type Cam = { toScreenX(x: number): number; toScreenY(y: number): number };
+    type Bh = {
+      paused: boolean;
+      reset(): void;
+      step(): void;
+      renderer: { camera: Cam };
+      bh: {
+        ship: number;
+        holes: number[];
+        lives: number;
+        over: boolean;
+        parked: boolean;
+        holeRadius: number[];
+        field: { width: number; height: number };
+        world: { components: Record<string, { x: Float64Array; y: Float64Array }> };
+      };
+      level: { parked: boolean; spec: { practice: boolean } };
+      holeExtents(): number[][];
+      textBox(name: string): number[];
+      pathHint(): string;
+      pathEnd(): string;
+      edgeWarning(): boolean;
+      swallowing(): boolean;
+      renewPathHint(): void;
+    };
+    const frames = (n: number) => g.frames(n);
+    /** In the page: the ship (and, given, hole 0) put at places, m, paused; the ship's velocity, m/s. */
+    const put = (ship: number[], hole?: number[]) =>
+      g.page.evaluate(
+        ([ship, hole]) => {
+          const w = window.game as unknown as Bh;
+          w.paused = true;
+          const c = w.bh.world.components,
+            s = w.bh.ship % 2 ** 25,
+            k = w.bh.holes[0]! % 2 ** 25;
+          if (hole) [c.Position!.x[k], c.Position!.y[k]] = [hole[0]!, hole[1]!];
+          c.Position!.x[s] = c.PreviousPosition!.x[s] = ship[0]!;
+          c.Position!.y[s] = c.PreviousPosition!.y[s] = ship[1]!;
+          c.Velocity!.x[s] = ship[2]!;
+          c.Velocity!.y[s] = ship[3]!;
+          w.level.parked = w.bh.parked = false;
+        },
+        [ship, hole] as const,
+      );
+    /** In the page: how many holes' drawings (`holeExtents`) the text's box overlaps, or -1 when it is not shown. */
+    const overHoles = (name: string) =>
+      g.page.evaluate((name) => {
+        const w = window.game as unknown as Bh;
+        const shown =
+          name === 'edge' ? w.edgeWarning() : name === 'pathHint' ? w.pathHint() !== '' && w.pathEnd() === 'clear' : w.swallowing();
+        if (!shown) return -1;
+        const cam = w.renderer.camera;
+        const [l, t, r, b] = w.textBox(name);
+        return w
+          .holeExtents()
+          .filter(
+            ([x0, x1, y0, y1]) => cam.toScreenX(x1!) > l! && cam.toScreenX(x0!) < r! && cam.toScreenY(y0!) > t! && cam.toScreenY(y1!) < b!,
+          ).length;
+      }, name);
+    const hole = await g.page.evaluate(() => {
+      const w = window.game as unknown as Bh;
+      w.reset();
+      // The path's words show the first times only: earlier tests on this page may have used them up.
+      w.renewPathHint();
+      const c = w.bh.world.components,
+        k = w.bh.holes[0]! % 2 ** 25;
+      return [c.Position!.x[k]!, c.Position!.y[k]!, w.bh.field.width, w.bh.field.height];
+    });
+    const [hx, hy, W, H] = hole as [number, number, number, number];
+    // The ship down and to the left of the hole, drifting up and away: the grey path runs on to end
+    // just left of and below the hole, where its words, to the right of its end, lay over the hole.
+    const shown: string[] = [];
+    for (const [dx, dy] of [
+      [-3.5, -4],
+      [-4, -4],
+      [-4, -3],
+    ]) {
+      await put([hx + dx!, hy + dy!, -0.8, 0.8]);
+      await frames(3);
+      const n = await overHoles('pathHint');
+      if (n >= 0) shown.push(`${dx},${dy}: ${n}`);
+    }
+    expect(shown.length, 'the path hint shown').toBeGreaterThan(0);
+    expect(
+      shown.filter((t) => !t.endsWith(': 0')),
+      'the path hint over a hole',
+    ).toEqual([]);
+    // The hole where the edge warning is put first (a quarter of the way down, mid-field), the ship
+    // at the left edge: the warning goes elsewhere.
+    await put([1.2, 6, 0, 0.5], [W / 2, 0.75 * H - 0.3]);
+    await frames(3);
+    expect(await overHoles('edge'), 'the edge warning over a hole (-1: not shown)').toBe(0);
+    // The last life lost (not practice) into a hole high up, whose caption above it stood where the
+    // continue panel first showed: the caption keeps off the panel in every frame of the swallow.
+    await put([W / 2, 0.45 * H - 3, 0, 3], [W / 2, 0.45 * H]);
+    const over = await g.page.evaluate(() => {
+      const w = window.game as unknown as Bh;
+      w.level.spec = { ...w.level.spec, practice: false };
+      w.bh.lives = 1;
+      for (let i = 0; i < 120 && !w.bh.over; i++) w.step();
+      return w.bh.over;
+    });
+    expect(over).toBe(true);
+    const hits: string[] = [];
+    for (let i = 0; i < 6; i++) {
+      await frames(1);
+      const seen = await g.page.evaluate(() => {
+        const w = window.game as unknown as Bh;
+        if (!w.swallowing()) return null;
+        const bar = document.querySelector<HTMLElement>('.bp-touchbar.bp-action');
+        const c = document.querySelector('canvas')!.getBoundingClientRect();
+        const [l, t, r, b] = w.textBox('swallow');
+        const covered = Array.from(bar?.children ?? [])
+          .map((e) => e.getBoundingClientRect())
+          .filter((e) => e.height > 0 && e.left - c.left < r! && e.right - c.left > l! && e.top - c.top < b! && e.bottom - c.top > t!);
+        return covered.length;
+      });
+      if (seen === null) break;
+      if (seen > 0) hits.push(`frame ${i}: ${seen}`);
+    }
+    expect(hits, 'the caption of the last fall over the continue panel').toEqual([]);
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as Bh;
+      w.reset();
+      w.paused = false;
+    });
+    expect(g.errors).toEqual([]);
+  });
+});
+
 describe('black hole, the replay clock and the paused path words', () => {
   it("the replay's clock is the attempt's game time: the wait on the pad it skips is not counted", async () => {
     type Bh = BlackHolePage & {
