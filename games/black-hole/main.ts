@@ -1945,11 +1945,13 @@ const THRUST_WORDS: Partial<Record<Thrust, string>> = {
 const trialPath = new Float64Array(path.length);
 
 /**
- * The arrows whose path, held from now, flies through the next ring at `ring` (m), or null when none
- * does. Tried in an order a player can follow without the advice flipping: the arrows held now (a
- * path through the ring is kept while it lasts), then ↑ alone (tried before a side arrow is let go),
- * then the side towards the ring with ↑, that side alone, the other side with ↑. Never an arrow with
- * ↓: a late reaction to ↓ overshot a ring below and the advice swung back and forth.
+ * How to fly through the next ring at `ring` (m): "Tap" or "Hold" and the arrows, or null when no
+ * arrow does. Tried in an order a player can follow without the advice flipping: the arrows held now
+ * (a path through the ring is kept while it lasts), then ↑ alone (tried before a side arrow is let
+ * go), then the side towards the ring with ↑, that side alone, the other side with ↑; each first as a
+ * tap (TAP_STEPS of thrust, then coasting), then held. A ring near enough for a tap is "Tap": with
+ * the ring some 40 px away, "Hold → and ↑" held for half a second flew the ship past it, off the top.
+ * Never an arrow with ↓: a late reaction to ↓ overshot a ring below and the advice swung back and forth.
  */
 function ringAdvice(ring: readonly [number, number]): string | null {
   const [rx, ry] = ring;
@@ -1957,16 +1959,23 @@ function ringAdvice(ring: readonly [number, number]): string | null {
     away = toward === 'left' ? 'right' : 'left';
   const tries: Thrust[] = [bh.thrust, 'up', `up-${toward}`, toward, `up-${away}`];
   const live = bh.thrust;
-  let found: Thrust | null = null;
+  let found: string | null = null;
   for (const t of tries) {
     if (!(t in THRUST_WORDS)) continue;
     bh.thrust = t;
-    const n = predictPath(bh, predictor, trialPath, PATH_STEPS, run?.holeVx);
-    for (let i = 0; i < n && !found; i++) if (Math.hypot(trialPath[2 * i]! - rx, trialPath[2 * i + 1]! - ry) < RING_RADIUS) found = t;
+    for (const [verb, thrustSteps] of [
+      ['Tap', TAP_STEPS],
+      ['Hold', Infinity],
+    ] as const) {
+      const n = predictPath(bh, predictor, trialPath, PATH_STEPS, run?.holeVx, thrustSteps);
+      for (let i = 0; i < n && !found; i++)
+        if (Math.hypot(trialPath[2 * i]! - rx, trialPath[2 * i + 1]! - ry) < RING_RADIUS) found = `${verb} ${THRUST_WORDS[t]!}`;
+      if (found) break;
+    }
     if (found) break;
   }
   bh.thrust = live;
-  return found ? THRUST_WORDS[found]! : null;
+  return found;
 }
 
 /**
@@ -1982,7 +1991,7 @@ function coachLine(x: number): string {
   // A ring left: the arrows that fly through it (`ringAdvice`), before all else: its path does not fall first.
   const ring = run && run.ringsTaken < run.rings.length ? run.rings[run.ringsTaken]! : null;
   const advice = ring ? ringAdvice(ring) : null;
-  if (advice) return `Gold ring first!\nHold ${advice} to fly through it.`;
+  if (advice) return `Gold ring first!\n${advice} to fly through it.`;
   if (pathKind === 'falls') {
     // The hole that takes the path: the one whose horizon its end is nearest.
     const P = bh.world.components.Position;

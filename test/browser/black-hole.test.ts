@@ -315,6 +315,86 @@ describe('black hole, words off the holes and the continue panel', () => {
   });
 });
 
+describe('black hole, the coach by a near ring', () => {
+  it('with the ring 1.3 m away the coach says tap, and a tap of what it names flies through the ring', async () => {
+    // The issue this answers: "Hold → and ↑ to fly through it" showed with the ring some 40 px away,
+    // and → held half a second flew the ship past the ring, off the top.
+    type Bh = {
+      paused: boolean;
+      reset(): void;
+      step(): void;
+      coach(): string;
+      readyLeft(): number;
+      bh: {
+        ship: number;
+        parked: boolean;
+        field: { width: number };
+        world: { components: Record<string, { x: Float64Array; y: Float64Array }> };
+      };
+      level: { parked: boolean; rings: number[][]; ringsTaken: number };
+    };
+    /** In the page: the ship at rest `dx`, `dy` m from level 1's ring (towards the middle), unpaused (the coach shows only then). */
+    const put = (dx: number, dy: number) =>
+      g.page.evaluate(
+        ([dx, dy]) => {
+          const w = window.game as unknown as Bh;
+          const c = w.bh.world.components,
+            s = w.bh.ship % 2 ** 25,
+            [rx, ry] = w.level.rings[0]!;
+          c.Position!.x[s] = c.PreviousPosition!.x[s] = rx! + dx!;
+          c.Position!.y[s] = c.PreviousPosition!.y[s] = ry! + dy!;
+          c.Velocity!.x[s] = c.Velocity!.y[s] = 0;
+          w.level.parked = w.bh.parked = false;
+          w.level.ringsTaken = 0;
+          w.paused = false;
+        },
+        [dx, dy],
+      );
+    const coach = () => g.waitFor(() => (window.game as unknown as Bh).coach(), null);
+    // A new game, its ready moment (no thrust for a second of the wall clock after a restart) over.
+    await g.page.evaluate(() => (window.game as unknown as Bh).reset());
+    await g.frames(2);
+    await g.waitFor(() => (window.game as unknown as Bh).readyLeft() === 0, null);
+    const side = await g.page.evaluate(() => {
+      const w = window.game as unknown as Bh & { bh: { field: { width: number } } };
+      return w.level.rings[0]![0]! < w.bh.field.width / 2 ? 1 : -1;
+    });
+    await put(side * 0.5, -1.2);
+    await g.frames(2);
+    const near = await coach();
+    expect(near).toMatch(/^Gold ring first!\nTap (↑|[←→]( and ↑)?) to fly through it\.$/);
+    // Do as it says: the arrows it names, pressed and let go at once (a tap: TAP_STEPS of thrust),
+    // then 3 s of steps: the ship flies through the ring.
+    const taken = await g.page.evaluate((words) => {
+      const w = window.game as unknown as Bh;
+      w.paused = true;
+      // Back where the coach read the path (the holes' pull moved it meanwhile), at rest.
+      const c = w.bh.world.components,
+        s = w.bh.ship % 2 ** 25,
+        [rx, ry] = w.level.rings[0]!;
+      c.Position!.x[s] = c.PreviousPosition!.x[s] = rx! + (rx! < w.bh.field.width / 2 ? 0.5 : -0.5);
+      c.Position!.y[s] = c.PreviousPosition!.y[s] = ry! - 1.2;
+      c.Velocity!.x[s] = c.Velocity!.y[s] = 0;
+      const keys: Record<string, string> = { '←': 'ArrowLeft', '→': 'ArrowRight', '↑': 'ArrowUp' };
+      const named = [...words.split('\n')[1]!].filter((c) => c in keys).map((c) => keys[c]!);
+      // Down and up in one task, unpaused (paused, a key let go lets go at once), then paused again.
+      w.paused = false;
+      for (const key of named) window.dispatchEvent(new KeyboardEvent('keydown', { key, code: key }));
+      for (const key of named) window.dispatchEvent(new KeyboardEvent('keyup', { key, code: key }));
+      w.paused = true;
+      for (let i = 0; i < 180 && w.level.ringsTaken === 0; i++) w.step();
+      return w.level.ringsTaken;
+    }, near);
+    expect(taken, near).toBe(1);
+    // Far below the ring: held arrows (a tap would not reach it within the 3 s the coach looks ahead).
+    await put(side * 4, -9);
+    await g.frames(2);
+    expect(await coach()).toMatch(/^Gold ring first!\nHold /);
+    await g.page.evaluate(() => (window.game as unknown as Bh).reset());
+    expect(g.errors).toEqual([]);
+  });
+});
+
 describe('black hole, the replay clock and the paused path words', () => {
   it("the replay's clock is the attempt's game time: the wait on the pad it skips is not counted", async () => {
     type Bh = BlackHolePage & {
@@ -1182,7 +1262,7 @@ describe.each([
 
 /**
  * In the page: a naive player of level 1 who does what the coach beside the ship says (the arrows it
- * names, and no others), read every frame, with the keys (desktop) or fingers on the pad's arrows
+ * names, and no others: held, or for "Tap" pressed and let go at once, at most every half second), read every frame, with the keys (desktop) or fingers on the pad's arrows
  * (phone: one synthetic touch pointer per arrow, at its button's centre). After a fall or an exit
  * the page forgets what was held, so it lifts everything and presses again. It plays until the level
  * is cleared or 60 s of game time pass, and reports how it went on `window.naivePlayer`.
@@ -1217,7 +1297,8 @@ function playAsCoachSays(touch: boolean): void {
     else window.dispatchEvent(new KeyboardEvent('keyup', { key: KEYS[a], bubbles: true }));
   };
   const start = w.bh.world.steps;
-  let resets = w.bh.resets;
+  let resets = w.bh.resets,
+    lastTap = -Infinity;
   const said = new Set<string>();
   const report = (cleared: boolean) => {
     for (const a of [...held.keys()]) up(a);
@@ -1238,7 +1319,17 @@ function playAsCoachSays(touch: boolean): void {
       for (const a of [...held.keys()]) up(a);
     }
     const coach = w.coach();
-    if (coach !== '') {
+    if (/\nTap /.test(coach)) {
+      // "Tap ...": the arrows it names pressed and let go at once, at most every half second.
+      said.add(coach);
+      for (const a of [...held.keys()]) up(a);
+      if (w.bh.world.steps - lastTap >= 30) {
+        lastTap = w.bh.world.steps;
+        const taps = [...coach].filter((c) => c in KEYS);
+        for (const a of taps) down(a);
+        for (const a of taps) up(a);
+      }
+    } else if (coach !== '') {
       said.add(coach);
       const want = [...coach].filter((c) => c in KEYS);
       for (const a of [...held.keys()]) if (!want.includes(a)) up(a);
