@@ -133,7 +133,32 @@ export interface LevelSpec {
    * memorised or blind input misses them, a player who watches the screen steers through them.
    */
   readonly rings: number;
+  /**
+   * Range of how far out (and as far up) from the start the holes on the 45-degree lines are drawn,
+   * m (before the field's limits: 2 m clear of its edge), [low, high]; unused on fork and wall levels.
+   */
+  readonly diagonalOut: readonly [number, number];
+  /**
+   * How far from the start a hole's horizon is kept, m, where the draws allow (each hole is drawn
+   * up to 300 times for a place this far from the start and 3 m from the other holes' horizons).
+   */
+  readonly padClear: number;
 }
+
+/**
+ * Level 4's `LevelSpec.diagonalOut`, m: its first holes beside the path, after three levels of holes
+ * far from the pad. At the other levels' 5 m out (7 m from the pad) a 0.8 s hold of ↑ and → from the
+ * pad fell into the lower-right hole within 1.8 s on the phone's field (seed 1); from 7.5 m out (as
+ * far as that field allows) short taps from the pad coast clear of it for 2.5 s or more
+ * (scripts/black-hole-pad.mjs).
+ */
+export const LEVEL4_DIAGONAL_OUT: readonly [number, number] = Object.freeze([7.5, 11]);
+
+/**
+ * Level 4's `LevelSpec.padClear`, m (4 on the other levels): its hole drawn anywhere on the field
+ * came as near as 5.6 m to the pad on the phone's field, where taps from the pad fell into it.
+ */
+export const LEVEL4_PAD_CLEAR = 7;
 
 /**
  * A ring's radius, m: the ship takes a ring when its centre comes within this of the ring's centre
@@ -303,6 +328,8 @@ export function levelSpec(level: number): LevelSpec {
     wallHeight: [number, number] = [10, 12],
     zigzag = false,
     anchored = drift > 0 && blockers > 0,
+    diagonalOut: readonly [number, number] = [5, 11],
+    padClear = 4,
   ): LevelSpec =>
     Object.freeze({
       level,
@@ -319,6 +346,8 @@ export function levelSpec(level: number): LevelSpec {
       zigzag,
       practice: level === 1,
       rings: levelRings(level),
+      diagonalOut: Object.freeze([diagonalOut[0], diagonalOut[1]]) as readonly [number, number],
+      padClear,
     });
   switch (level) {
     case 1:
@@ -331,7 +360,7 @@ export function levelSpec(level: number): LevelSpec {
     case 3:
       return spec(5, [0.35, 0.45], 0, 0, 0, Infinity, 0, false, [10, 12], true);
     case 4:
-      return spec(4, [0.5, 0.7], 0, 1, 0, Infinity);
+      return spec(4, [0.5, 0.7], 0, 1, 0, Infinity, 0, false, [10, 12], false, false, LEVEL4_DIAGONAL_OUT, LEVEL4_PAD_CLEAR);
     case 5:
       return spec(4, [0.45, 0.85], 0, 2, 0, Infinity);
     case 6:
@@ -894,8 +923,11 @@ function layHoles(game: BlackHoleGame, run: LevelRun, spec: LevelSpec): void {
         y = rng.range(lo * s, hi * s);
       } else if (spec.gate === 0 && k < spec.blockers + 2) {
         // The next two on the lines at 45 degrees up from the start, one each side, 5 m out or more
-        // (as far as the field allows, 2 m clear of its edge), so holding two arrows falls in.
-        const out = Math.max(4, Math.min(rng.range(5, 11), game.field.width / 2 - 2 - r, game.lineY - 4 - r - game.start[1]));
+        // (`diagonalOut`, as far as the field allows, 2 m clear of its edge), so holding two arrows falls in.
+        const out = Math.max(
+          4,
+          Math.min(rng.range(spec.diagonalOut[0], spec.diagonalOut[1]), game.field.width / 2 - 2 - r, game.lineY - 4 - r - game.start[1]),
+        );
         x = game.start[0] + (k === spec.blockers ? -1 : 1) * out;
         y = game.start[1] + out + rng.range(-0.3, 0.3);
       } else {
@@ -911,7 +943,7 @@ function layHoles(game: BlackHoleGame, run: LevelRun, spec: LevelSpec): void {
         }
         y = rng.range(5 + r, game.lineY - 3 - r);
       }
-      let gap = Math.hypot(x - game.start[0], y - game.start[1]) - r - 4;
+      let gap = Math.hypot(x - game.start[0], y - game.start[1]) - r - spec.padClear;
       for (let j = 0; j < game.holes.length; j++) {
         const h = game.holes[j]!;
         const P = world.components.Position;

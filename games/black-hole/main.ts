@@ -195,14 +195,12 @@ const path = new Float64Array(2 * (Math.max(PATH_STEPS, PAD_PATH_STEPS) + 1));
 let pathPoints = 0;
 /** Points round each ring left, twice (its halo and halfway in), that the captions keep off (`drawRings`); room for 8 rings. */
 const RING_DOTS = 16;
-/** Room in `dots` for the points that mark the holes for the coach to keep off (`addHoleDots`). */
-const HOLE_DOTS = 600;
 /**
  * Screen points, px, of what a caption must not cover this frame: every path dot drawn (the pad's side
  * paths too), the rings left and the ship (x0, y0, x1, y1, ...; `dotCount` of them). The coach and the path's "falls in"
  * are placed off them (`placeOffDots`).
  */
-const dots = new Float64Array(2 * (PATH_STEPS + 2 * PAD_PATH_STEPS + 16 + HOLE_DOTS + 8 * (1 + 2 * RING_DOTS)));
+const dots = new Float64Array(2 * (PATH_STEPS + 2 * PAD_PATH_STEPS + 16 + 8 * (1 + 2 * RING_DOTS)));
 let dotCount = 0;
 /** Adds a point, px, to `dots` (ignored once it is full). */
 function addDot(x: number, y: number): void {
@@ -222,19 +220,47 @@ function dotsIn(l: number, t: number, r: number, b: number, pad: number): number
   return n;
 }
 /**
+ * What covering a hole's drawing counts for in `placeOffDots`, in dots: more than a whole path's, so
+ * a caption kept off the holes sits on the path's dots before it sits on a hole.
+ */
+const HOLE_COVER = 10_000;
+/**
+ * How many of the holes' drawings of the last frame (`holeExtents`: disc, ring and glow) the box
+ * [l, r] x [t, b], px, widened by `pad` px each way, overlaps.
+ */
+function holesIn(l: number, t: number, r: number, b: number, pad: number): number {
+  const cam = renderer.camera;
+  let n = 0;
+  for (let i = 0; i < bh.holes.length && i < holeExtents.length; i++) {
+    const e = holeExtents[i];
+    if (!e) continue;
+    if (
+      cam.toScreenX(e[1]!) > l - pad &&
+      cam.toScreenX(e[0]!) < r + pad &&
+      cam.toScreenY(e[2]!) > t - pad &&
+      cam.toScreenY(e[3]!) < b + pad
+    )
+      n++;
+  }
+  return n;
+}
+/**
  * Moves `text` (its anchor as set, its size as now) to where its box covers the fewest of this frame's
  * `dots` (within 6 px), the nearest such place to (px, py), px, where it is put first: a place in a grid
  * of `step` px over the box [x0, x1] x [y0, y1], px, that holds the whole box. Where (px, py) covers
- * none it stays there.
+ * none it stays there. With `holes`, a hole's drawing (`holesIn`, within 6 px) counts as HOLE_COVER
+ * dots, so the text goes where it covers no hole if the box has such a place.
  */
-function placeOffDots(text: Text, px: number, py: number, x0: number, y0: number, x1: number, y1: number, step = 12): void {
+function placeOffDots(text: Text, px: number, py: number, x0: number, y0: number, x1: number, y1: number, step = 12, holes = false): void {
   const w = text.width,
     h = text.height,
     ax = text.anchor.x * w,
     ay = text.anchor.y * h;
+  const covered = (l: number, t: number): number =>
+    dotsIn(l, t, l + w, t + h, 6) + (holes ? HOLE_COVER * holesIn(l, t, l + w, t + h, 6) : 0);
   let bestX = px,
     bestY = py,
-    best = dotsIn(px - ax, py - ay, px - ax + w, py - ay + h, 6) * 1e9;
+    best = covered(px - ax, py - ay) * 1e9;
   if (best > 0)
     for (let l = x0; l + w <= x1; l += step)
       for (let t = y0; t + h <= y1; t += step) {
@@ -243,7 +269,7 @@ function placeOffDots(text: Text, px: number, py: number, x0: number, y0: number
         // The distance first: a place farther than the best so far cannot beat it (this runs every frame).
         const far = (x - px) ** 2 + (y - py) ** 2;
         if (far >= best) continue;
-        const score = dotsIn(l, t, l + w, t + h, 6) * 1e9 + far;
+        const score = covered(l, t) * 1e9 + far;
         if (score < best) [best, bestX, bestY] = [score, x, y];
       }
   text.position.set(bestX, bestY);
@@ -1407,7 +1433,7 @@ function drawLevelBanner(): void {
   levelBanner.position.set(cam.toScreenX(playField.width / 2), room > 0 ? top + (room - h) / 2 : cam.toScreenY(bh.lineY) + 8);
 }
 
-/** Draws the edges the ship is within EDGE_WARN m of, brighter the nearer, and shows the warning. */
+/** Draws the edges the ship is within EDGE_WARN m of, brighter the nearer, and shows the warning (off the holes and the path). */
 function drawEdgeWarning(x: number, y: number): void {
   const cam = renderer.camera;
   const W = playField.width,
@@ -1426,7 +1452,9 @@ function drawEdgeWarning(x: number, y: number): void {
   overlay.stroke({ width: 6, color: 0xff4d4d, alpha: a });
   edgeText.style.wordWrap = true;
   edgeText.style.wordWrapWidth = Math.max(160, x1 - x0 - 24);
-  edgeText.position.set((x0 + x1) / 2, cam.toScreenY(0.75 * H));
+  // A quarter of the way down, or the nearest place from there that covers neither the path, the
+  // ship, the rings nor a hole (centred there it sat over the hole the path was about to fall into).
+  placeOffDots(edgeText, (x0 + x1) / 2, cam.toScreenY(0.75 * H), x0 + 4, y0 + 4, x1 - 4, y1 - 4, 12, true);
 }
 
 /**
@@ -1545,11 +1573,38 @@ function drawSwallow(u: number, k: number): void {
   swallowText.alpha = u < 0.75 ? 1 : (1 - u) / 0.25;
   const top = cam.toScreenY(playField.height),
     gap = 2.2 * k;
-  const above = hy - gap - swallowText.height >= top + 4;
-  swallowText.anchor.set(0.5, above ? 1 : 0);
+  const bottom = cam.toScreenY(0);
   const half = swallowText.width / 2 + 4;
   const x = Math.max(cam.toScreenX(0) + half, Math.min(cam.toScreenX(playField.width) - half, hx));
-  swallowText.position.set(x, above ? hy - gap : hy + gap);
+  // Above the hole, or under it where the field's top is too near; and off the continue panel after
+  // the last life (faded over it, the caption read as part of the panel): the other side of the hole,
+  // else just past the panel's nearer edge.
+  const h = swallowText.height,
+    panel = actionPanelBox();
+  const clear = (t: number): boolean => t >= top + 4 && t + h <= bottom - 4 && (!panel || t + h + 4 <= panel[1]! || t - 4 >= panel[3]!);
+  const places = [hy - gap - h, hy + gap];
+  if (panel) places.push(panel[1]! - 4 - h, panel[3]! + 4);
+  const t = places.find(clear) ?? (hy - gap - h >= top + 4 ? hy - gap - h : hy + gap);
+  swallowText.anchor.set(0.5, 0);
+  swallowText.position.set(x, t);
+}
+
+/**
+ * The next-level / continue panel's box while it shows over the field (its button and the game-over
+ * card, `.bp-touchbar.bp-action`'s children), px in the canvas [left, top, right, bottom], else null.
+ */
+function actionPanelBox(): number[] | null {
+  const bar = document.querySelector<HTMLElement>('.bp-touchbar.bp-action');
+  if (!bar?.isConnected || bar.offsetHeight === 0) return null;
+  const c = app.canvas.getBoundingClientRect();
+  let box: number[] | null = null;
+  for (const el of Array.from(bar.children) as HTMLElement[]) {
+    if (el.offsetHeight === 0) continue;
+    const r = el.getBoundingClientRect();
+    const b = [r.left - c.left, r.top - c.top, r.right - c.left, r.bottom - c.top];
+    box = box ? [Math.min(box[0]!, b[0]!), Math.min(box[1]!, b[1]!), Math.max(box[2]!, b[2]!), Math.max(box[3]!, b[3]!)] : b;
+  }
+  return box;
 }
 
 /** How long a fall's red flash lasts, the shake, and the words over the field, ms. */
@@ -1761,7 +1816,7 @@ function drawPathHint(color: number, fromPad: boolean): void {
   pathHint.anchor.set(left ? 1 : 0, 0.5);
   const at = left ? Math.max(x0 + pathHint.width, ex - 8) : Math.min(x1 - pathHint.width, ex + 8);
   const y = Math.max(top + pathHint.height / 2, Math.min(bottom - pathHint.height / 2, ey));
-  placeOffDots(pathHint, at, y, x0, top, x1, bottom, 8);
+  placeOffDots(pathHint, at, y, x0, top, x1, bottom, 8, true);
 }
 
 /**
@@ -1890,11 +1945,13 @@ const THRUST_WORDS: Partial<Record<Thrust, string>> = {
 const trialPath = new Float64Array(path.length);
 
 /**
- * The arrows whose path, held from now, flies through the next ring at `ring` (m), or null when none
- * does. Tried in an order a player can follow without the advice flipping: the arrows held now (a
- * path through the ring is kept while it lasts), then ↑ alone (tried before a side arrow is let go),
- * then the side towards the ring with ↑, that side alone, the other side with ↑. Never an arrow with
- * ↓: a late reaction to ↓ overshot a ring below and the advice swung back and forth.
+ * How to fly through the next ring at `ring` (m): "Tap" or "Hold" and the arrows, or null when no
+ * arrow does. Tried in an order a player can follow without the advice flipping: the arrows held now
+ * (a path through the ring is kept while it lasts), then ↑ alone (tried before a side arrow is let
+ * go), then the side towards the ring with ↑, that side alone, the other side with ↑; each first as a
+ * tap (TAP_STEPS of thrust, then coasting), then held. A ring near enough for a tap is "Tap": with
+ * the ring some 40 px away, "Hold → and ↑" held for half a second flew the ship past it, off the top.
+ * Never an arrow with ↓: a late reaction to ↓ overshot a ring below and the advice swung back and forth.
  */
 function ringAdvice(ring: readonly [number, number]): string | null {
   const [rx, ry] = ring;
@@ -1902,16 +1959,23 @@ function ringAdvice(ring: readonly [number, number]): string | null {
     away = toward === 'left' ? 'right' : 'left';
   const tries: Thrust[] = [bh.thrust, 'up', `up-${toward}`, toward, `up-${away}`];
   const live = bh.thrust;
-  let found: Thrust | null = null;
+  let found: string | null = null;
   for (const t of tries) {
     if (!(t in THRUST_WORDS)) continue;
     bh.thrust = t;
-    const n = predictPath(bh, predictor, trialPath, PATH_STEPS, run?.holeVx);
-    for (let i = 0; i < n && !found; i++) if (Math.hypot(trialPath[2 * i]! - rx, trialPath[2 * i + 1]! - ry) < RING_RADIUS) found = t;
+    for (const [verb, thrustSteps] of [
+      ['Tap', TAP_STEPS],
+      ['Hold', Infinity],
+    ] as const) {
+      const n = predictPath(bh, predictor, trialPath, PATH_STEPS, run?.holeVx, thrustSteps);
+      for (let i = 0; i < n && !found; i++)
+        if (Math.hypot(trialPath[2 * i]! - rx, trialPath[2 * i + 1]! - ry) < RING_RADIUS) found = `${verb} ${THRUST_WORDS[t]!}`;
+      if (found) break;
+    }
     if (found) break;
   }
   bh.thrust = live;
-  return found ? THRUST_WORDS[found]! : null;
+  return found;
 }
 
 /**
@@ -1927,7 +1991,7 @@ function coachLine(x: number): string {
   // A ring left: the arrows that fly through it (`ringAdvice`), before all else: its path does not fall first.
   const ring = run && run.ringsTaken < run.rings.length ? run.rings[run.ringsTaken]! : null;
   const advice = ring ? ringAdvice(ring) : null;
-  if (advice) return `Gold ring first!\nHold ${advice} to fly through it.`;
+  if (advice) return `Gold ring first!\n${advice} to fly through it.`;
   if (pathKind === 'falls') {
     // The hole that takes the path: the one whose horizon its end is nearest.
     const P = bh.world.components.Position;
@@ -1950,23 +2014,6 @@ function coachLine(x: number): string {
       ? `Red: you'd leave the field!\nHold ${lx < 0 ? '→' : '←'} and ↑ to come back.`
       : "Red: you'd leave the field!\nHold ↑.";
   return pathReachesLine ? "Blue: you'll reach the line!\nHold ↑." : 'Clear for now.\nHold ↑ to climb.';
-}
-
-/**
- * Adds to `dots` a grid of points, about 10 px apart, over each hole's drawing of the last frame
- * (`holeExtents`: disc, ring and glow), so the coach is placed off the holes as off the path.
- */
-function addHoleDots(): void {
-  const cam = renderer.camera;
-  for (const [l, r, b, t] of holeExtents.slice(0, bh.holes.length)) {
-    const x0 = cam.toScreenX(l!),
-      x1 = cam.toScreenX(r!),
-      y0 = cam.toScreenY(t!),
-      y1 = cam.toScreenY(b!);
-    const nx = Math.max(1, Math.ceil((x1 - x0) / 10)),
-      ny = Math.max(1, Math.ceil((y1 - y0) / 10));
-    for (let i = 0; i <= nx; i++) for (let j = 0; j <= ny; j++) addDot(x0 + ((x1 - x0) * i) / nx, y0 + ((y1 - y0) * j) / ny);
-  }
 }
 
 /**
@@ -2018,11 +2065,10 @@ function drawCoach(x: number, sx: number, sy: number, k: number): void {
       const b = label.getBounds();
       for (let fx = 0; fx <= 1; fx += 0.25) for (const fy of [0, 0.5, 1]) addDot(b.x + fx * b.width, b.y + fy * b.height);
     }
-  // And off the holes: each one's disc, ring and glow (beside the pad's path it sat on the hole's ring).
-  addHoleDots();
   const fieldTop = cam.toScreenY(playField.height) + 4,
     fieldBottom = cam.toScreenY(0) - 4;
-  placeOffDots(coachText, tx, Math.max(top, Math.min(bottom, sy - 0.2 * k)), x0, fieldTop, x1, fieldBottom);
+  // And off the holes: each one's disc, ring and glow (beside the pad's path it sat on the hole's ring).
+  placeOffDots(coachText, tx, Math.max(top, Math.min(bottom, sy - 0.2 * k)), x0, fieldTop, x1, fieldBottom, 12, true);
 }
 
 /**
@@ -2306,9 +2352,12 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   const age = performance.now() - swallow.start;
   if (swallow.active && age > SWALLOW_MS) swallow.active = false;
   if (swallow.active) {
+    // The status first, then the button: after the last life the continue panel shows, placed off the
+    // holes, from the swallow's first frame, and the caption at the hole keeps off it.
+    updateStatus();
+    placeActionButton();
     drawSwallow(age / SWALLOW_MS, k);
     edgeText.visible = false;
-    updateStatus();
     return;
   }
   swallowText.visible = false;
@@ -2437,9 +2486,16 @@ shell.expose({
   pathLabel: (): string => (pathLabel.visible ? pathLabel.text : ''),
   /** The words by the end of a path that runs on in the last frame, saying what the dots are (the first times only), else ''. */
   pathHint: (): string => (pathHint.visible ? pathHint.text : ''),
-  /** A text's box in the last frame, px in the canvas [left, top, right, bottom]: 'coach', 'pathHint' or 'pathLabel'. */
-  textBox: (name: 'coach' | 'pathHint' | 'pathLabel'): number[] => {
-    const b = { coach: coachText, pathHint, pathLabel }[name].getBounds();
+  /** Gives the path's words their PATH_HINT_MS again (shown the first times only: a test that needs them shown calls this). */
+  renewPathHint: (): void => {
+    pathHintLeft.ms = PATH_HINT_MS;
+  },
+  /**
+   * A text's box in the last frame, px in the canvas [left, top, right, bottom]: 'coach', 'pathHint',
+   * 'pathLabel', 'edge' (the edge warning), 'swallow' (the caption at the hole) or 'death' (a fall's words).
+   */
+  textBox: (name: 'coach' | 'pathHint' | 'pathLabel' | 'edge' | 'swallow' | 'death'): number[] => {
+    const b = { coach: coachText, pathHint, pathLabel, edge: edgeText, swallow: swallowText, death: deathText }[name].getBounds();
     return [b.x, b.y, b.x + b.width, b.y + b.height];
   },
   /**

@@ -180,6 +180,228 @@ describe('black hole', () => {
   });
 });
 
+describe('black hole, words off the holes and the continue panel', () => {
+  it("the path's words, the edge warning and the caption of a fall cover no hole, nor the continue panel after the last life", async () => {
+    // The issue this answers: "predicted path, next 3 s" was drawn over level 1's hole, the edge
+    // warning over the hole the path was about to fall into, and a fading "Swallowed!" over the
+    // game-over panel. Paused and set up by hand, so nothing depends on the machine's speed.
+    type Cam = { toScreenX(x: number): number; toScreenY(y: number): number };
+    type Bh = {
+      paused: boolean;
+      reset(): void;
+      step(): void;
+      renderer: { camera: Cam };
+      bh: {
+        ship: number;
+        holes: number[];
+        lives: number;
+        over: boolean;
+        parked: boolean;
+        holeRadius: number[];
+        field: { width: number; height: number };
+        world: { components: Record<string, { x: Float64Array; y: Float64Array }> };
+      };
+      level: { parked: boolean; spec: { practice: boolean } };
+      holeExtents(): number[][];
+      textBox(name: string): number[];
+      pathHint(): string;
+      pathEnd(): string;
+      edgeWarning(): boolean;
+      swallowing(): boolean;
+      renewPathHint(): void;
+    };
+    const frames = (n: number) => g.frames(n);
+    /** In the page: the ship (and, given, hole 0) put at places, m, paused; the ship's velocity, m/s. */
+    const put = (ship: number[], hole?: number[]) =>
+      g.page.evaluate(
+        ([ship, hole]) => {
+          const w = window.game as unknown as Bh;
+          w.paused = true;
+          const c = w.bh.world.components,
+            s = w.bh.ship % 2 ** 25,
+            k = w.bh.holes[0]! % 2 ** 25;
+          if (hole) [c.Position!.x[k], c.Position!.y[k]] = [hole[0]!, hole[1]!];
+          c.Position!.x[s] = c.PreviousPosition!.x[s] = ship[0]!;
+          c.Position!.y[s] = c.PreviousPosition!.y[s] = ship[1]!;
+          c.Velocity!.x[s] = ship[2]!;
+          c.Velocity!.y[s] = ship[3]!;
+          w.level.parked = w.bh.parked = false;
+        },
+        [ship, hole] as const,
+      );
+    /** In the page: how many holes' drawings (`holeExtents`) the text's box overlaps, or -1 when it is not shown. */
+    const overHoles = (name: string) =>
+      g.page.evaluate((name) => {
+        const w = window.game as unknown as Bh;
+        const shown =
+          name === 'edge' ? w.edgeWarning() : name === 'pathHint' ? w.pathHint() !== '' && w.pathEnd() === 'clear' : w.swallowing();
+        if (!shown) return -1;
+        const cam = w.renderer.camera;
+        const [l, t, r, b] = w.textBox(name);
+        return w
+          .holeExtents()
+          .filter(
+            ([x0, x1, y0, y1]) => cam.toScreenX(x1!) > l! && cam.toScreenX(x0!) < r! && cam.toScreenY(y0!) > t! && cam.toScreenY(y1!) < b!,
+          ).length;
+      }, name);
+    const hole = await g.page.evaluate(() => {
+      const w = window.game as unknown as Bh;
+      w.reset();
+      // The path's words show the first times only: earlier tests on this page may have used them up.
+      w.renewPathHint();
+      const c = w.bh.world.components,
+        k = w.bh.holes[0]! % 2 ** 25;
+      return [c.Position!.x[k]!, c.Position!.y[k]!, w.bh.field.width, w.bh.field.height];
+    });
+    const [hx, hy, W, H] = hole as [number, number, number, number];
+    // The ship down and to the left of the hole, drifting up and away: the grey path runs on to end
+    // just left of and below the hole, where its words, to the right of its end, lay over the hole.
+    const shown: string[] = [];
+    for (const [dx, dy] of [
+      [-3.5, -4],
+      [-4, -4],
+      [-4, -3],
+    ]) {
+      await put([hx + dx!, hy + dy!, -0.8, 0.8]);
+      await frames(3);
+      const n = await overHoles('pathHint');
+      if (n >= 0) shown.push(`${dx},${dy}: ${n}`);
+    }
+    expect(shown.length, 'the path hint shown').toBeGreaterThan(0);
+    expect(
+      shown.filter((t) => !t.endsWith(': 0')),
+      'the path hint over a hole',
+    ).toEqual([]);
+    // The hole where the edge warning is put first (a quarter of the way down, mid-field), the ship
+    // at the left edge: the warning goes elsewhere.
+    await put([1.2, 6, 0, 0.5], [W / 2, 0.75 * H - 0.3]);
+    await frames(3);
+    expect(await overHoles('edge'), 'the edge warning over a hole (-1: not shown)').toBe(0);
+    // The last life lost (not practice) into a hole high up, whose caption above it stood where the
+    // continue panel first showed: the caption keeps off the panel in every frame of the swallow.
+    await put([W / 2, 0.45 * H - 3, 0, 3], [W / 2, 0.45 * H]);
+    const over = await g.page.evaluate(() => {
+      const w = window.game as unknown as Bh;
+      w.level.spec = { ...w.level.spec, practice: false };
+      w.bh.lives = 1;
+      for (let i = 0; i < 120 && !w.bh.over; i++) w.step();
+      return w.bh.over;
+    });
+    expect(over).toBe(true);
+    const hits: string[] = [];
+    for (let i = 0; i < 6; i++) {
+      await frames(1);
+      const seen = await g.page.evaluate(() => {
+        const w = window.game as unknown as Bh;
+        if (!w.swallowing()) return null;
+        const bar = document.querySelector<HTMLElement>('.bp-touchbar.bp-action');
+        const c = document.querySelector('canvas')!.getBoundingClientRect();
+        const [l, t, r, b] = w.textBox('swallow');
+        const covered = Array.from(bar?.children ?? [])
+          .map((e) => e.getBoundingClientRect())
+          .filter((e) => e.height > 0 && e.left - c.left < r! && e.right - c.left > l! && e.top - c.top < b! && e.bottom - c.top > t!);
+        return covered.length;
+      });
+      if (seen === null) break;
+      if (seen > 0) hits.push(`frame ${i}: ${seen}`);
+    }
+    expect(hits, 'the caption of the last fall over the continue panel').toEqual([]);
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as Bh;
+      w.reset();
+      w.paused = false;
+    });
+    expect(g.errors).toEqual([]);
+  });
+});
+
+describe('black hole, the coach by a near ring', () => {
+  it('with the ring 1.3 m away the coach says tap, and a tap of what it names flies through the ring', async () => {
+    // The issue this answers: "Hold → and ↑ to fly through it" showed with the ring some 40 px away,
+    // and → held half a second flew the ship past the ring, off the top.
+    type Bh = {
+      paused: boolean;
+      reset(): void;
+      step(): void;
+      coach(): string;
+      readyLeft(): number;
+      bh: {
+        ship: number;
+        holes: number[];
+        parked: boolean;
+        field: { width: number };
+        world: { components: Record<string, { x: Float64Array; y: Float64Array }> };
+      };
+      level: { parked: boolean; rings: number[][]; ringsTaken: number };
+    };
+    /** In the page: the ship at rest `dx`, `dy` m from level 1's ring (towards the middle), unpaused (the coach shows only then). */
+    const put = (dx: number, dy: number) =>
+      g.page.evaluate(
+        ([dx, dy]) => {
+          const w = window.game as unknown as Bh;
+          const c = w.bh.world.components,
+            s = w.bh.ship % 2 ** 25,
+            [rx, ry] = w.level.rings[0]!;
+          c.Position!.x[s] = c.PreviousPosition!.x[s] = rx! + dx!;
+          c.Position!.y[s] = c.PreviousPosition!.y[s] = ry! + dy!;
+          c.Velocity!.x[s] = c.Velocity!.y[s] = 0;
+          // The hole far off in a lower corner across from the ring, so its pull does not move the ship
+          // while the frames run (the coach reads its path only unpaused): what it says holds for the
+          // ship at rest there, however slow the frames.
+          const k = w.bh.holes[0]! % 2 ** 25;
+          c.Position!.x[k] = rx! < w.bh.field.width / 2 ? w.bh.field.width - 2 : 2;
+          c.Position!.y[k] = 3;
+          w.level.parked = w.bh.parked = false;
+          w.level.ringsTaken = 0;
+          w.paused = false;
+        },
+        [dx, dy],
+      );
+    const coach = () => g.waitFor(() => (window.game as unknown as Bh).coach(), null);
+    // A new game, its ready moment (no thrust for a second of the wall clock after a restart) over.
+    await g.page.evaluate(() => (window.game as unknown as Bh).reset());
+    await g.frames(2);
+    await g.waitFor(() => (window.game as unknown as Bh).readyLeft() === 0, null);
+    const side = await g.page.evaluate(() => {
+      const w = window.game as unknown as Bh & { bh: { field: { width: number } } };
+      return w.level.rings[0]![0]! < w.bh.field.width / 2 ? 1 : -1;
+    });
+    await put(side * 0.5, -1.2);
+    await g.frames(2);
+    const near = await coach();
+    expect(near).toMatch(/^Gold ring first!\nTap (↑|[←→]( and ↑)?) to fly through it\.$/);
+    // Do as it says: the arrows it names, pressed and let go at once (a tap: TAP_STEPS of thrust),
+    // then 3 s of steps: the ship flies through the ring.
+    const taken = await g.page.evaluate((words) => {
+      const w = window.game as unknown as Bh;
+      w.paused = true;
+      // Back where the coach read the path (the holes' pull moved it meanwhile), at rest.
+      const c = w.bh.world.components,
+        s = w.bh.ship % 2 ** 25,
+        [rx, ry] = w.level.rings[0]!;
+      c.Position!.x[s] = c.PreviousPosition!.x[s] = rx! + (rx! < w.bh.field.width / 2 ? 0.5 : -0.5);
+      c.Position!.y[s] = c.PreviousPosition!.y[s] = ry! - 1.2;
+      c.Velocity!.x[s] = c.Velocity!.y[s] = 0;
+      const keys: Record<string, string> = { '←': 'ArrowLeft', '→': 'ArrowRight', '↑': 'ArrowUp' };
+      const named = [...words.split('\n')[1]!].filter((c) => c in keys).map((c) => keys[c]!);
+      // Down and up in one task, unpaused (paused, a key let go lets go at once), then paused again.
+      w.paused = false;
+      for (const key of named) window.dispatchEvent(new KeyboardEvent('keydown', { key, code: key }));
+      for (const key of named) window.dispatchEvent(new KeyboardEvent('keyup', { key, code: key }));
+      w.paused = true;
+      for (let i = 0; i < 180 && w.level.ringsTaken === 0; i++) w.step();
+      return w.level.ringsTaken;
+    }, near);
+    expect(taken, near).toBe(1);
+    // Far below the ring: held arrows (a tap would not reach it within the 3 s the coach looks ahead).
+    await put(side * 4, -9);
+    await g.frames(2);
+    expect(await coach()).toMatch(/^Gold ring first!\nHold /);
+    await g.page.evaluate(() => (window.game as unknown as Bh).reset());
+    expect(g.errors).toEqual([]);
+  });
+});
+
 describe('black hole, the replay clock and the paused path words', () => {
   it("the replay's clock is the attempt's game time: the wait on the pad it skips is not counted", async () => {
     type Bh = BlackHolePage & {
@@ -1047,7 +1269,7 @@ describe.each([
 
 /**
  * In the page: a naive player of level 1 who does what the coach beside the ship says (the arrows it
- * names, and no others), read every frame, with the keys (desktop) or fingers on the pad's arrows
+ * names, and no others: held, or for "Tap" pressed and let go at once, at most every half second), read every frame, with the keys (desktop) or fingers on the pad's arrows
  * (phone: one synthetic touch pointer per arrow, at its button's centre). After a fall or an exit
  * the page forgets what was held, so it lifts everything and presses again. It plays until the level
  * is cleared or 60 s of game time pass, and reports how it went on `window.naivePlayer`.
@@ -1082,7 +1304,8 @@ function playAsCoachSays(touch: boolean): void {
     else window.dispatchEvent(new KeyboardEvent('keyup', { key: KEYS[a], bubbles: true }));
   };
   const start = w.bh.world.steps;
-  let resets = w.bh.resets;
+  let resets = w.bh.resets,
+    lastTap = -Infinity;
   const said = new Set<string>();
   const report = (cleared: boolean) => {
     for (const a of [...held.keys()]) up(a);
@@ -1103,7 +1326,17 @@ function playAsCoachSays(touch: boolean): void {
       for (const a of [...held.keys()]) up(a);
     }
     const coach = w.coach();
-    if (coach !== '') {
+    if (/\nTap /.test(coach)) {
+      // "Tap ...": the arrows it names pressed and let go at once, at most every half second.
+      said.add(coach);
+      for (const a of [...held.keys()]) up(a);
+      if (w.bh.world.steps - lastTap >= 30) {
+        lastTap = w.bh.world.steps;
+        const taps = [...coach].filter((c) => c in KEYS);
+        for (const a of taps) down(a);
+        for (const a of taps) up(a);
+      }
+    } else if (coach !== '') {
       said.add(coach);
       const want = [...coach].filter((c) => c in KEYS);
       for (const a of [...held.keys()]) if (!want.includes(a)) up(a);
