@@ -30,7 +30,8 @@
  * or the hoop; the player judges the bounce and the last stretch). Each basketball thrown or dropped fades out once it has come to rest (MAX_LOOSE). A pull taken back
  * to within CANCEL_PULL of its press point ("release here to cancel") and let go throws nothing; the
  * same pull throws at the same speed wherever it is pressed (fullPull: no shorter full pull by the
- * window's edge, which made one pull throw at 62 % from one press and 69 % from another). A pull
+ * window's edge, which made one pull throw at 62 % from one press and 69 % from another; a finger's,
+ * fingerFullPull, fits under a ball on the floor, so a full-power pull stays on a phone's screen). A pull
  * under way as the clock runs out is the round's last throw: the round waits for it and its ball
  * (lastCall), under a big "Last throw!"; the last 10 s the clock is red, the last 5 a big countdown ticks. The net stops a
  * ball from below or the side (hoop.ts netContact). The player's balls are basketballs, all the same
@@ -1211,7 +1212,7 @@ function local(event: PointerEvent): [number, number] {
  * Not longer on a phone: a throw from 1.5 m over the floor of its box has some 170 px of screen
  * under it to pull into, and the steepest baskets must fit in it with room to spare (a full pull of
  * 7.5 m of the court, 268 px there, left players at the screen's bottom edge short of the hoop).
- * That is a mouse's; a finger's is FINGER_PULL_SCALE times longer, its room found by sliding up first.
+ * That is a mouse's; a finger's is fingerFullPull (longer, within the room under the heap).
  * The same for every press, wherever it begins (taken when the press begins), so a pull's power is
  * a function of its length alone. Pointer capture keeps the pull going past the canvas' and the
  * window's edge.
@@ -1221,16 +1222,36 @@ function fullPull(): number {
 }
 
 /**
- * How much longer a finger's full pull is than fullPull: gentler, so a few px of a finger change a
- * throw less (at 234 px some 15 px moved a throw from the ramp to over the hoop). The room for it is
- * found by sliding the finger up from the ball before pulling back (the anchor follows a finger above
- * it: the pointermove handler), not bounded by the screen's edge next to the ball.
+ * How much longer a finger's full pull is than fullPull where the screen has room for it under the
+ * heap (fingerFullPull): gentler, so a few px of a finger change a throw less.
  */
 const FINGER_PULL_SCALE = 1.5;
 
+/**
+ * A finger's full-speed pull, CSS px: FINGER_PULL_SCALE times fullPull, but no longer than the
+ * screen's room under a ball lying on the box's floor (its centre down to the screen's bottom edge,
+ * less FINGER_EDGE_PX): on a phone held upright a 351 px pull ran off the screen's bottom at 55 to
+ * 64 % power, short of every hoop, from the balls where they lie (some 150 to 180 px over the edge).
+ * The same for every press of a page (the room under the floor, not under the press), so a pull's
+ * power is still a function of its length alone. At least FINGER_MIN_PULL.
+ */
+function fingerFullPull(): number {
+  const cam = renderer.camera,
+    rect = canvas.getBoundingClientRect();
+  const floorBall = rect.top + cam.toScreenY(layoutOf(TALL).box.min[1] + PLAYER_RADIUS);
+  const room = (window.innerHeight || rect.bottom) - floorBall - FINGER_EDGE_PX;
+  return Math.min(fullPull() * FINGER_PULL_SCALE, Math.max(FINGER_MIN_PULL, room));
+}
+
+/** Room a finger's full pull leaves at the screen's bottom edge, CSS px (a thumb does not reach the last pixels). */
+const FINGER_EDGE_PX = 10;
+
+/** The shortest full pull a finger gets, CSS px (fingerFullPull): at that, a px of pull is some 1.2 % of the top speed. */
+const FINGER_MIN_PULL = 100;
+
 /** Whether the current press is a finger's (pointer type 'touch'). */
 let pressFinger = false;
-/** The current press's full-speed pull, CSS px (fullPull when it began). */
+/** The current press's full-speed pull, CSS px (fullPull, or fingerFullPull for a finger, when it began). */
 let fullPullNow = 420;
 
 /**
@@ -1610,7 +1631,7 @@ canvas.addEventListener('pointerdown', (event) => {
   boardSaid = false;
   slop = event.pointerType === 'touch' ? TOUCH_SLOP : CLICK_SLOP;
   pressFinger = event.pointerType === 'touch';
-  fullPullNow = fullPull() * (pressFinger ? FINGER_PULL_SCALE : 1);
+  fullPullNow = pressFinger ? fingerFullPull() : fullPull();
   holdStart = performance.now();
   clearTimeout(holdTimer);
   const { clientX, clientY, pointerId: id, pointerType, timeStamp } = event;
@@ -2100,23 +2121,35 @@ const MARK_EVERY_MS = 400;
 let marked = { ball: 0, at: Number.NEGATIVE_INFINITY };
 
 /**
+ * How near a side wall of the tall box a ball's centre may lie, m, before the ball to mark as
+ * throwable (throwableBall) passes it over: on a phone one by the wall left no room on the screen to pull
+ * towards that wall. Counted as this much less height in the ranking.
+ */
+const EDGE_ROOM = 1.5;
+
+/**
  * The ball to mark as throwable: of the heap's balls at rest (slower than COLUMN_REST_SPEED, not in
  * flight or fading), released below the shot line and not buried (liftSpot leaves it where it lies),
  * the one whose top is highest, a metre of distance sideways from the hoop (up to 5 m) counting as
- * 0.3 m of height (a throw from under the hoop is a hard one). 0 when there is none.
+ * 0.3 m of height (a throw from under the hoop is a hard one), one within EDGE_ROOM of a side wall
+ * of the tall box EDGE_ROOM less. 0 when there is none.
  */
 function throwableBall(): number {
   const c = shell.world.components,
     P = c.Position,
     V = c.Velocity,
     R = c.Ball.radius;
-  const spot = hoopSpots(TALL)[hoopAt]!;
+  const spot = hoopSpots(TALL)[hoopAt]!,
+    { box } = layoutOf(TALL);
   const ranked: [number, number][] = [];
   for (const e of handles.balls) {
     if (flights.has(e) || fading.has(e)) continue;
     const s = slotOf(e);
     if (V.x[s]! ** 2 + V.y[s]! ** 2 > COLUMN_REST_SPEED ** 2 || !mayScore(spot, P.y[s]!)) continue;
-    ranked.push([e, P.y[s]! + R[s]! + 0.3 * Math.min(5, Math.abs(P.x[s]! - spot.x))]);
+    // In the tall box (a phone held upright) a ball by a side wall (within EDGE_ROOM) is passed over
+    // for one with room beside it to pull into; the wide box's screen has room beside its walls.
+    const edge = TALL && Math.min(P.x[s]! - box.min[0], box.max[0] - P.x[s]!) < EDGE_ROOM ? EDGE_ROOM : 0;
+    ranked.push([e, P.y[s]! + R[s]! + 0.3 * Math.min(5, Math.abs(P.x[s]! - spot.x)) - edge]);
   }
   ranked.sort((a, b) => b[1] - a[1]);
   // The best few only: a buried one is passed over (liftSpot is the costly part).
@@ -3336,7 +3369,7 @@ shell.expose({
   aiming: (): boolean => pointerId !== -1,
   /** The label over the press or the carried ball ('' when none shows), e.g. 'release here to cancel'. */
   aimLabel: (): string => (holdLabel.visible ? holdLabel.text : ''),
-  /** The full-speed pull of the current (or last) press, CSS px (fullPull when it began). */
+  /** The full-speed pull of the current (or last) press, CSS px (fullPull, or fingerFullPull for a finger, when it began). */
   fullPull: (): number => fullPullNow,
   /** The status row's text (goal, numbers, hint). */
   statusText: (): string => status.element.innerText,

@@ -11,7 +11,8 @@
  * back onto its press point cancels (mouse and touch), a pull straight down from the lowest heap ball
  * reaches the full speed inside the viewport, and a pull under way as the clock runs out is the round's
  * last throw, which counts (the round ends once its ball scores or misses). A rule reminder
- * ("Too high") stays until the next throw; on a phone a press on the field closes the parameters drawer.
+ * ("Too high") stays until the next throw; on a phone a press on the field closes the parameters drawer,
+ * and the "drag me" ball (off the side walls) scores with a finger pull that stays on the screen.
  * Tests that play the same page (size, touch, ball count) share it (./shared-page.ts); before each, the
  * game is reset (window.game.reset(), unpaused) and the page's error list emptied, so each starts from
  * the same seeded scene. Game seconds the tests wait for are stepped in the page (./stepping.ts), not
@@ -1577,6 +1578,90 @@ describe('bouncing balls: the hoop game', () => {
       expect(await g.page.evaluate(() => document.querySelector('.bp-error')?.textContent ?? '')).toBe('');
       await g.page.evaluate(() => (window.game as unknown as { reset(): void }).reset());
     });
+    it('phone 390 x 844, touch: the "drag me" ball, off the side walls, scores with a finger pull that stays on the screen', async () => {
+      // The page as a stranger opens it (20 balls on a phone held upright), its own: the throw ends
+      // the first-throw hints. Before, the full pull (351 px) ran off the screen's bottom at 55-64 %
+      // power from the balls where they lie, and no pull from the marked ball (by the left wall) that
+      // stayed on the screen reached the hoop.
+      const g = await h.openGame('bouncing-balls', { viewport: { width: 390, height: 844 }, touch: true });
+      type Reach = AimGame & { throwable(): { ball: number; label: string }; aimFrom(e: number, vx: number, vy: number): number[] };
+      const ball = await g.waitFor(() => {
+        const m = (window.game as unknown as Reach).throwable();
+        return m.ball !== 0 && m.label === 'drag me' ? m.ball : null;
+      }, null);
+      const where = await g.page.evaluate((e) => {
+        localStorage.clear();
+        document.querySelector('[data-hud="touch-hint"]')?.remove();
+        const game = window.game as unknown as Reach;
+        game.paused = true;
+        const p = game.positions(),
+          i = game.ballIds().indexOf(e);
+        return { x: p[2 * i]!, y: p[2 * i + 1]!, hoop: game.hoop(), W: innerWidth, H: innerHeight };
+      }, ball);
+      // Not against a side wall (main.ts EDGE_ROOM, 1.5 m): there is room beside it to pull into.
+      expect(Math.min(where.x, 10 - where.x)).toBeGreaterThanOrEqual(1.5);
+      const at = await g.worldToPage(where.x, where.y);
+      const cdp = await g.page.context().newCDPSession(g.page);
+      const touch = (type: 'touchStart' | 'touchMove', x: number, y: number) =>
+        cdp.send('Input.dispatchTouchEvent', { type, touchPoints: [{ x, y, id: 1 }] });
+      await touch('touchStart', at.x, at.y);
+      await touch('touchMove', at.x, at.y + 30);
+      await g.frames(1);
+      const full = await g.page.evaluate(() => (window.game as unknown as { fullPull(): number }).fullPull());
+      // Every pull from the ball down and away from the hoop (30 to 85 degrees under level, every 2 px
+      // of length) whose end stays on the screen (1 px inside its edges), with its throw's velocity
+      // (hoop.ts slingSpeed of the length over the full pull).
+      const away = Math.sign(where.x - 0.5 * (where.hoop.minX + where.hoop.maxX)) || -1;
+      const pulls: number[][] = [];
+      for (let a = 30; a <= 85; a += 5)
+        for (let l = 20; ; l += 2) {
+          const dx = away * l * Math.cos((a * Math.PI) / 180),
+            dy = l * Math.sin((a * Math.PI) / 180);
+          if (at.x + dx < 1 || at.x + dx > where.W - 1 || at.y + dy > where.H - 1) break;
+          const s = slingSpeed(l, full);
+          pulls.push([dx, dy, (-dx / l) * s, (dy / l) * s]);
+        }
+      // The first whose predicted flight (the page's own, stopped by the balls in its way) goes down
+      // through the hoop's opening.
+      const hit = await g.page.evaluate(
+        ([e, pulls]) => {
+          const game = window.game as unknown as Reach;
+          const o = game.hoop();
+          return (
+            pulls.find(([, , vx, vy]) => {
+              const f = game.aimFrom(e, vx!, vy!);
+              for (let i = 1; i < f.length / 2; i++) {
+                const y0 = f[2 * i - 1]!,
+                  y1 = f[2 * i + 1]!;
+                if (y0 >= o.y && y1 < o.y) {
+                  const x = f[2 * i - 2]! + ((y0 - o.y) / (y0 - y1)) * (f[2 * i]! - f[2 * i - 2]!);
+                  return x > o.minX && x < o.maxX;
+                }
+              }
+              return false;
+            }) ?? null
+          );
+        },
+        [ball, pulls] as const,
+      );
+      expect(hit, `no on-screen pull of ${pulls.length} scores (full pull ${full} px)`).not.toBeNull();
+      // Thrown by that pull (the finger's assist may take it to the middle of its run of scoring
+      // lengths): it goes in within 4 s of game time.
+      await touch('touchMove', at.x + hit![0]! / 2, at.y + hit![1]! / 2);
+      await touch('touchMove', at.x + hit![0]!, at.y + hit![1]!);
+      await g.frames(1);
+      await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+      await cdp.detach();
+      const score = await g.page.evaluate(() => {
+        const game = window.game as unknown as AimGame & { step(): void };
+        for (let k = 0; k < 240 && game.round().score === 0; k++) game.step();
+        return { score: game.round().score, shots: game.round().shots };
+      });
+      expect(score).toEqual({ score: 1, shots: 1 });
+      expect(g.errors).toEqual([]);
+      await g.close();
+    });
+
     it('phone 390 x 844, touch: a finger slid up from a ball by the left wall pulls back from where it is, not from the ball', async () => {
       // A page of its own: the throw ends the shared page's first-throw hints the next test reads.
       const g = await h.openGame('bouncing-balls', { viewport: { width: 390, height: 844 }, touch: true, query: { count: 8 } });
@@ -1706,7 +1791,7 @@ describe('bouncing balls: cancelling, full-power pulls and the end of a round mi
   };
 
   for (const phone of [false, true]) {
-    it(`${phone ? 'phone 390 x 844, touch' : 'desktop 1280 x 800, mouse'}: the same pull throws at the same power wherever it is pressed, and 5 px more adds 1 or 2 %`, async () => {
+    it(`${phone ? 'phone 390 x 844, touch' : 'desktop 1280 x 800, mouse'}: the same pull throws at the same power wherever it is pressed, and 5 px more adds a little`, async () => {
       const g = await h.openGame('bouncing-balls', {
         viewport: phone ? { width: 390, height: 844 } : { width: 1280, height: 800 },
         touch: phone,
@@ -1735,15 +1820,22 @@ describe('bouncing balls: cancelling, full-power pulls and the end of a round mi
       expect(got[0]!.power).toBe(Math.round((100 * slingSpeed(Math.hypot(dx, dy), got[0]!.fullPull)) / 20));
       expect(longer.power).toBe(Math.round((100 * slingSpeed(Math.hypot(dx, dy + 5), got[0]!.fullPull)) / 20));
       expect(longer.power - got[0]!.power).toBeGreaterThan(0);
-      expect(longer.power - got[0]!.power).toBeLessThanOrEqual(2);
+      // At most 2 % with a mouse; a finger's full pull on a phone is shorter (fitting under the heap:
+      // fingerFullPull), 5 px of it up to 4 % (the finger's assist takes a pull close to a basket to it).
+      expect(longer.power - got[0]!.power).toBeLessThanOrEqual(phone ? 4 : 2);
       // The full pull is 60 % of the canvas' shorter side within [230, 420] px (main.ts fullPull), a
       // finger's 1.5 times that (FINGER_PULL_SCALE: gentler; the room is found by sliding up first).
       const side = await g.page.evaluate(() => {
         const c = document.querySelector('canvas')!;
         return Math.min(c.clientWidth, c.clientHeight);
       });
-      expect(got[0]!.fullPull).toBeCloseTo(Math.min(420, Math.max(230, 0.6 * side)) * (phone ? 1.5 : 1), 9);
-      if (phone) expect(got[0]!.fullPull).toBeLessThan(360);
+      // On a phone no longer than the room under a ball on the floor, down to the screen's bottom edge
+      // less 10 px (main.ts fingerFullPull: a full pull of 351 px ran off the screen at 55-64 %).
+      const room = await g.page.evaluate(() => innerHeight);
+      const floorBall = (await g.worldToPage(0, 0.4)).y;
+      const expected = Math.min(420, Math.max(230, 0.6 * side)) * (phone ? 1.5 : 1);
+      expect(got[0]!.fullPull).toBeCloseTo(phone ? Math.min(expected, Math.max(100, room - floorBall - 10)) : expected, 6);
+      if (phone) expect(got[0]!.fullPull).toBeLessThan(160);
       // A tap (a click, or a finger's tap) on the hoop's rim drops no ball into its net (one did, dead,
       // under the rim's line): the ball count stays and the hint says how to score.
       const rim = await g.page.evaluate(() => {
