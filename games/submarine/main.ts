@@ -965,7 +965,8 @@ function showGlowHint(t: number, inView: boolean): void {
 }
 /**
  * The end card's button: "Next level" after a won run below the last level (the R key or the reset
- * button plays the level again), else "Play again" / "Try again" (the same level).
+ * button plays the level again), else "Play again" / "Try again" (the same level). The run it
+ * starts runs: a pause the player made before (or on the end card) is lifted, as the button says play.
  */
 const showAgain = createActionButton('Play again ▶', () => {
   if (state.over === 'won' && params.level < LEVELS.length) {
@@ -977,6 +978,7 @@ const showAgain = createActionButton('Play again ▶', () => {
     history.replaceState(history.state, '', url);
   }
   shell.reset();
+  shell.paused = false;
 });
 /** Best time of each course (seed and beacon count) that was won, s, in localStorage. */
 const BEST_KEY = 'bitphysics.submarine.best';
