@@ -867,6 +867,15 @@ gauge.style.cssText = `font: ${compact ? 12 : 13}px/1.35 system-ui, sans-serif; 
 const goal = document.createElement('div');
 goal.dataset.hud = 'goal';
 goal.style.cssText = 'font-weight: 700; color: #ffe066;';
+/** The goal's words up to the clock ("L1 · ◯ 2/6 · 0:42"), and the course's par after it (" · par 2:20"). */
+const goalText = document.createElement('span');
+/**
+ * The par after the clock, in lighter type (smaller on a phone, so the status line keeps to one
+ * line of 390 px): a target to beat, not a limit the clock counts towards ("0:42/2:20" read as one).
+ */
+const goalPar = document.createElement('span');
+goalPar.style.cssText = `font-weight: 400;${compact ? ' font-size: 10px;' : ''}`;
+goal.append(goalText, goalPar);
 const readout = document.createElement('div');
 readout.dataset.hud = 'readout';
 const readoutText = document.createElement('span');
@@ -2911,17 +2920,20 @@ function draw(): void {
   // The depth, and the depth ordered while the boat is a metre or more from it ("depth 30 → 34 m").
   const ordered = Number.isFinite(state.holdY) && Math.abs(state.holdY + depth) >= 1 ? ` → ${(-state.holdY).toFixed(0)}` : '';
   const streak = state.streak > 1 ? ` ×${Math.min(GLOW_STREAK_MAX, state.streak)}` : '';
-  // One short line: the level ("L2"), the beacons (◯, as in the controls list), the clock against par (red once past it), the depth
+  // One short line: the level ("L2"), the beacons (◯, as in the controls list), the clock and par ("0:42 · par 2:20", on a phone "◯ 2/6 0:42 par 2:20", par in small type; red once past par), the depth
   // (and the depth ordered), the speed ahead or astern, the score and the hull. The depth's rate,
   // the tanks, pitch and helm go in the desktop's info column (the depth gauge shows the order);
   // on a phone it keeps to 390 px: the speed as a mark ("▶4") after the depth ("82→87 m ▶4"), the
   // score without "pts", no skipped names, "stopped by the seabed" shortened, in 12 px type.
   const missedNames = missed.flatMap((m, i) => (m ? [beaconName(i)] : []));
   const missedText = missedNames.length > 0 && !compact ? ` (${missedNames.join(', ')} skipped)` : '';
-  goal.textContent =
+  const goalWords =
     end ||
-    `L${params.level}${compact ? '' : ' ·'} ◯ ${state.collected}/${taken.length}${missedText} · ${clock(state.time)}/${clock(state.par)}`;
-  // The clock turns red once par has passed.
+    `L${params.level}${compact ? '' : ' ·'} ◯ ${state.collected}/${taken.length}${missedText}${compact ? ' ' : ' · '}${clock(state.time)}`;
+  const parWords = end ? '' : `${compact ? '' : ' ·'} par ${clock(state.par)}`;
+  if (goalText.textContent !== goalWords) goalText.textContent = goalWords;
+  if (goalPar.textContent !== parWords) goalPar.textContent = parWords;
+  // The clock turns red once par has passed (it keeps counting: par is a target, not a limit).
   goal.style.color = !state.over && state.time > state.par ? '#ff9e8a' : '#ffe066';
   // The speed is over the ground (the hull's own velocity); the water's, where it flows, beside it
   // ("current ◀2.4 m/s", as the current's note tells it), so a boat held back by the current is seen to be, not only felt.
