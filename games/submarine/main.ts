@@ -51,7 +51,7 @@ import {
   letGoHint,
   missWarning,
   passedBeacon,
-  seabedBetween,
+  ridgeInWay,
 } from './beacons';
 import { drawBoat, HEADLIGHT, inHeadlight } from './boat-drawing';
 import { CURRENT_NOTE_LIFE, CURRENT_NOTE_SPEED, currentAt, currentMark, currentNote, drawCurrent, driftInCurrent } from './current';
@@ -2522,7 +2522,8 @@ function draw(): void {
       by = sy(wy);
     const m = 40;
     aim.distance = best;
-    const ridge = seabedBetween(hxw, hyw, wx, wy, (x) => seabedHeight(handles.seabed, x));
+    // Only a ridge still to climb: not one far under the keel, nor one the boat is going away from.
+    const ridge = ridgeInWay(hxw, hyw, wx, wy, (x) => seabedHeight(handles.seabed, x), hyw - SUBMARINE.height / 2, c.Velocity.x[e]!);
     aim.crest = [Number.NaN, Number.NaN];
     const onWay = mineOnWay(hxw, hyw, wx, wy, mines, mineLive);
     wayMine = onWay ? onWay.index : -1;
