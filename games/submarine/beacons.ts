@@ -305,8 +305,8 @@ export function ridgeInWay(
  * and how far down or up, each when it is 3 m or more, e.g.
  * "beacon 85 m ahead, 30 m down". The boat moves nearly twice as fast ahead as it dives, so the depth
  * to make up is the part a player must start on early. `dx`, `dy`: the beacon's position minus the
- * hull's, m (y up); `ridge`: the seabed rises across the straight way
- * to it (`seabedBetween`), which adds `RIDGE_WARNING` on a second line; `mine`: a live mine lies on
+ * hull's, m (y up); `ridge`: a ridge to climb lies across the straight way
+ * to it (`ridgeInWay`), which adds `RIDGE_WARNING` on a second line; `mine`: a live mine lies on
  * that way (./mines.ts `mineOnWay`) and on which side to pass it, which adds `MINE_WARNING` there
  * instead when there is no ridge; `name`: the beacon's name (`beaconName`), put first as
  * "target C: 85 m ahead" (the one beacon to steer for, held until collected), so a change of target

@@ -243,7 +243,7 @@ const aim = {
   gaugeLeft: 0,
   /** The target's frame (its corner brackets, drawn while it is on screen) as last drawn: x, y, width, height, px (zeros while none). */
   frame: [0, 0, 0, 0],
-  /** Whether the seabed rises across the straight way to the target (the label's ridge warning and the crest mark show). */
+  /** Whether a ridge to climb lies across the straight way to the target (./beacons.ts ridgeInWay: the label's ridge warning and the crest mark show). */
   ridge: false,
   /** The ridge's crest as last marked: its place (x, y, m), NaN while none is marked. */
   crest: [Number.NaN, Number.NaN],
