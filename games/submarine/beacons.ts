@@ -265,14 +265,48 @@ export function seabedBetween(x0: number, y0: number, x1: number, y1: number, be
   return false;
 }
 
+/** How far under the keel a ridge's crest must lie for the label's ridge warning to clear, m (`ridgeInWay`). */
+export const RIDGE_CLEAR_BELOW = 2;
+/** The speed along x, m/s, from which a boat going away from its target is moving off the ridge between them (`ridgeInWay`). */
+export const RIDGE_LEAVING_SPEED = 0.5;
+
+/**
+ * Whether the label warns "climb over it" (`RIDGE_WARNING`) for the hull at (x0, y0), m (y up), its
+ * keel at `keel` (m) and moving along x at `vx` (m/s), and its beacon at (x1, y1): the straight way
+ * runs under the seabed (`seabedBetween`), the way's crest (the highest bed between the two, sampled
+ * every metre or less) stands higher than `RIDGE_CLEAR_BELOW` under the keel (a crest far below the
+ * boat asks no climb: the boat goes on over it and dives after), and the boat is not going away
+ * from the beacon at `RIDGE_LEAVING_SPEED` or more (the ridge then lies behind it; the warning comes
+ * back once it turns for the beacon).
+ * @throws RangeError when a coordinate, `keel` or `vx` is not finite.
+ */
+export function ridgeInWay(
+  x0: number,
+  y0: number,
+  x1: number,
+  y1: number,
+  bedAt: (x: number) => number,
+  keel: number,
+  vx: number,
+): boolean {
+  assertFinite('ridgeInWay', 'keel', keel);
+  assertFinite('ridgeInWay', 'vx', vx);
+  if (!seabedBetween(x0, y0, x1, y1, bedAt)) return false;
+  if ((x1 - x0) * vx < 0 && Math.abs(vx) >= RIDGE_LEAVING_SPEED) return false;
+  const n = Math.max(1, Math.ceil(Math.abs(x1 - x0)));
+  let crest = Number.NEGATIVE_INFINITY;
+  for (let i = 0; i <= n; i++) crest = Math.max(crest, bedAt(x0 + ((x1 - x0) * i) / n));
+  return crest > keel - RIDGE_CLEAR_BELOW;
+}
+
 /**
  * The pointer's label: how far ahead or behind the beacon lies (level, along the course: the hull's
  * pitch does not change the figures, so a boat nosing down or up reads the same beacon the same way)
  * and how far down or up, each when it is 3 m or more, e.g.
  * "beacon 85 m ahead, 30 m down". The boat moves nearly twice as fast ahead as it dives, so the depth
  * to make up is the part a player must start on early. `dx`, `dy`: the beacon's position minus the
- * hull's, m (y up); `ridge`: the seabed rises across the straight way
- * to it (`seabedBetween`), which adds `RIDGE_WARNING` on a second line; `mine`: a live mine lies on
+ * hull's, m (y up); `ridge`: a ridge to climb lies across the straight way
+ * to it (`ridgeInWay`), which adds `RIDGE_WARNING` on a second line; `mine`: a live mine lies on
  * that way (./mines.ts `mineOnWay`) and on which side to pass it, which adds `MINE_WARNING` there
  * instead when there is no ridge; `name`: the beacon's name (`beaconName`), put first as
  * "target C: 85 m ahead" (the one beacon to steer for, held until collected), so a change of target

@@ -51,7 +51,7 @@ import {
   letGoHint,
   missWarning,
   passedBeacon,
-  seabedBetween,
+  ridgeInWay,
 } from './beacons';
 import { drawBoat, HEADLIGHT, inHeadlight } from './boat-drawing';
 import { CURRENT_NOTE_LIFE, CURRENT_NOTE_SPEED, currentAt, currentMark, currentNote, drawCurrent, driftInCurrent } from './current';
@@ -243,7 +243,7 @@ const aim = {
   gaugeLeft: 0,
   /** The target's frame (its corner brackets, drawn while it is on screen) as last drawn: x, y, width, height, px (zeros while none). */
   frame: [0, 0, 0, 0],
-  /** Whether the seabed rises across the straight way to the target (the label's ridge warning and the crest mark show). */
+  /** Whether a ridge to climb lies across the straight way to the target (./beacons.ts ridgeInWay: the label's ridge warning and the crest mark show). */
   ridge: false,
   /** The ridge's crest as last marked: its place (x, y, m), NaN while none is marked. */
   crest: [Number.NaN, Number.NaN],
@@ -867,6 +867,15 @@ gauge.style.cssText = `font: ${compact ? 12 : 13}px/1.35 system-ui, sans-serif; 
 const goal = document.createElement('div');
 goal.dataset.hud = 'goal';
 goal.style.cssText = 'font-weight: 700; color: #ffe066;';
+/** The goal's words up to the clock ("L1 · ◯ 2/6 · 0:42"), and the course's par after it (" · par 2:20"). */
+const goalText = document.createElement('span');
+/**
+ * The par after the clock, in lighter type (smaller on a phone, so the status line keeps to one
+ * line of 390 px): a target to beat, not a limit the clock counts towards ("0:42/2:20" read as one).
+ */
+const goalPar = document.createElement('span');
+goalPar.style.cssText = `font-weight: 400;${compact ? ' font-size: 10px;' : ''}`;
+goal.append(goalText, goalPar);
 const readout = document.createElement('div');
 readout.dataset.hud = 'readout';
 const readoutText = document.createElement('span');
@@ -965,7 +974,8 @@ function showGlowHint(t: number, inView: boolean): void {
 }
 /**
  * The end card's button: "Next level" after a won run below the last level (the R key or the reset
- * button plays the level again), else "Play again" / "Try again" (the same level).
+ * button plays the level again), else "Play again" / "Try again" (the same level). The run it
+ * starts runs: a pause the player made before (or on the end card) is lifted, as the button says play.
  */
 const showAgain = createActionButton('Play again ▶', () => {
   if (state.over === 'won' && params.level < LEVELS.length) {
@@ -977,6 +987,7 @@ const showAgain = createActionButton('Play again ▶', () => {
     history.replaceState(history.state, '', url);
   }
   shell.reset();
+  shell.paused = false;
 });
 /** Best time of each course (seed and beacon count) that was won, s, in localStorage. */
 const BEST_KEY = 'bitphysics.submarine.best';
@@ -2511,7 +2522,8 @@ function draw(): void {
       by = sy(wy);
     const m = 40;
     aim.distance = best;
-    const ridge = seabedBetween(hxw, hyw, wx, wy, (x) => seabedHeight(handles.seabed, x));
+    // Only a ridge still to climb: not one far under the keel, nor one the boat is going away from.
+    const ridge = ridgeInWay(hxw, hyw, wx, wy, (x) => seabedHeight(handles.seabed, x), hyw - SUBMARINE.height / 2, c.Velocity.x[e]!);
     aim.crest = [Number.NaN, Number.NaN];
     const onWay = mineOnWay(hxw, hyw, wx, wy, mines, mineLive);
     wayMine = onWay ? onWay.index : -1;
@@ -2909,17 +2921,20 @@ function draw(): void {
   // The depth, and the depth ordered while the boat is a metre or more from it ("depth 30 → 34 m").
   const ordered = Number.isFinite(state.holdY) && Math.abs(state.holdY + depth) >= 1 ? ` → ${(-state.holdY).toFixed(0)}` : '';
   const streak = state.streak > 1 ? ` ×${Math.min(GLOW_STREAK_MAX, state.streak)}` : '';
-  // One short line: the level ("L2"), the beacons (◯, as in the controls list), the clock against par (red once past it), the depth
+  // One short line: the level ("L2"), the beacons (◯, as in the controls list), the clock and par ("0:42 · par 2:20", on a phone "◯ 2/6 0:42 par 2:20", par in small type; red once past par), the depth
   // (and the depth ordered), the speed ahead or astern, the score and the hull. The depth's rate,
   // the tanks, pitch and helm go in the desktop's info column (the depth gauge shows the order);
   // on a phone it keeps to 390 px: the speed as a mark ("▶4") after the depth ("82→87 m ▶4"), the
   // score without "pts", no skipped names, "stopped by the seabed" shortened, in 12 px type.
   const missedNames = missed.flatMap((m, i) => (m ? [beaconName(i)] : []));
   const missedText = missedNames.length > 0 && !compact ? ` (${missedNames.join(', ')} skipped)` : '';
-  goal.textContent =
+  const goalWords =
     end ||
-    `L${params.level}${compact ? '' : ' ·'} ◯ ${state.collected}/${taken.length}${missedText} · ${clock(state.time)}/${clock(state.par)}`;
-  // The clock turns red once par has passed.
+    `L${params.level}${compact ? '' : ' ·'} ◯ ${state.collected}/${taken.length}${missedText}${compact ? ' ' : ' · '}${clock(state.time)}`;
+  const parWords = end ? '' : `${compact ? '' : ' ·'} par ${clock(state.par)}`;
+  if (goalText.textContent !== goalWords) goalText.textContent = goalWords;
+  if (goalPar.textContent !== parWords) goalPar.textContent = parWords;
+  // The clock turns red once par has passed (it keeps counting: par is a target, not a limit).
   goal.style.color = !state.over && state.time > state.par ? '#ff9e8a' : '#ffe066';
   // The speed is over the ground (the hull's own velocity); the water's, where it flows, beside it
   // ("current ◀2.4 m/s", as the current's note tells it), so a boat held back by the current is seen to be, not only felt.

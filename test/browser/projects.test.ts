@@ -596,8 +596,9 @@ describe('projects', () => {
     // Named by its letter (the first beacon is A), the target held until collected.
     expect(aim.text).toBe(`target A: ${aim.text.match(/\d+ m ahead/)![0]}, ${Math.abs(aim.dy).toFixed(0)} m down`);
     // The goal and the clock are stated above the scene.
-    // (Level, beacons collected of the course's, the clock against par: "L1 · ◯ 0/6 · 0:00/2:20".)
-    expect(await g.page.locator('[data-hud="goal"]').textContent()).toMatch(/^L1 · ◯ 0\/6 · 0:\d\d\/\d:\d\d$/);
+    // (Level, beacons collected of the course's, the clock and par: "L1 · ◯ 0/6 · 0:00 · par 2:20",
+    // not "0:00/2:20", which read as a time limit.)
+    expect(await g.page.locator('[data-hud="goal"]').textContent()).toMatch(/^L1 · ◯ 0\/6 · 0:\d\d · par \d:\d\d$/);
     const x0 = await g.page.evaluate(() => {
       const w = window.game as unknown as Game & { hull(): number };
       return w.world.components.Position.x[w.hull()] as number;

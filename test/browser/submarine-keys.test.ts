@@ -195,7 +195,7 @@ describe('submarine keys (desktop)', () => {
     expect(g.errors).toEqual([]);
   });
 
-  it('the clock passing par is told on the banner; a first win is not called a new best but the time to beat', async () => {
+  it('the clock passing par is told on the banner; a first win is not called a new best but the time to beat; Next level runs even after a pause', async () => {
     type Won = Sub & {
       handles(): { beacons: Float64Array };
       pickupEffect(): { banner: string };
@@ -229,9 +229,23 @@ describe('submarine keys (desktop)', () => {
     expect(end.over).toBe('won');
     expect(end.text).not.toMatch(/new best/i);
     expect(end.text).toMatch(/the time to beat/);
+    // Paused on the end card (P), then "Next level": level 2 starts running, not paused (it kept the
+    // old pause, and the player met a frozen level with no overlay saying why).
+    await g.page.evaluate(() => {
+      (window.game as unknown as Sub).paused = true;
+    });
+    await g.page.getByRole('button', { name: /^Next level 2/ }).click();
+    const next = await g.page.evaluate(() => {
+      const w = window.game as unknown as Won & { params: { level: number } };
+      return { level: w.params.level, paused: w.paused, over: w.state.over };
+    });
+    expect(next).toEqual({ level: 2, paused: false, over: '' });
     await g.page.evaluate(() => {
       localStorage.removeItem('bitphysics.submarine.best');
-      (window.game as unknown as Sub).loop.start();
+      const w = window.game as unknown as Sub & { params: { level: number } };
+      w.params.level = 1;
+      w.reset();
+      w.loop.start();
     });
     expect(g.errors).toEqual([]);
   });

@@ -21,7 +21,9 @@ import {
   MINE_WARNING,
   missWarning,
   passedBeacon,
+  RIDGE_CLEAR_BELOW,
   RIDGE_WARNING,
+  ridgeInWay,
   seabedBetween,
   TURNED_BACK,
 } from '../../games/submarine/beacons';
@@ -287,6 +289,32 @@ describe('submarine beacon pointer', () => {
       if (under) expect(seabedBetween(x0, y0, x1, y1, at)).toBe(true);
     }
     expect(() => seabedBetween(Number.NaN, 0, 1, 0, bed)).toThrow(/seabedBetween: x0/);
+  });
+
+  it('clears the ridge warning once the ridge is far under the keel or behind the boat going away (issue 34)', () => {
+    // The bed of the test above: a ridge up to 25 m down from x = 20 to 40 m, 60 m down round it.
+    const bed = (x: number) => (x >= 20 && x <= 40 ? -25 : -60);
+    const keel = (y: number) => y - SUBMARINE.height / 2;
+    // Reported: the boat at 16 m, its beacon deep past the ridge (55 m down at x = 59): the straight
+    // way dips under the ridge's flank (29 m down at x = 20), so the old check (seabedBetween) warned
+    // "climb over it" though the crest lies 9 m under the boat.
+    expect(seabedBetween(0, -16, 59, -55, bed)).toBe(true);
+    expect(ridgeInWay(0, -16, 59, -55, bed, keel(-16), 3)).toBe(false);
+    // The boat at 30 m, under the crest: the climb is needed, the warning stays.
+    expect(ridgeInWay(0, -30, 59, -55, bed, keel(-30), 3)).toBe(true);
+    // The crest just inside RIDGE_CLEAR_BELOW under the keel still warns; just past it, clear.
+    const y = -25 + SUBMARINE.height / 2;
+    expect(ridgeInWay(0, y + RIDGE_CLEAR_BELOW - 0.1, 59, -55, bed, keel(y + RIDGE_CLEAR_BELOW - 0.1), 3)).toBe(true);
+    expect(ridgeInWay(0, y + RIDGE_CLEAR_BELOW + 0.1, 59, -55, bed, keel(y + RIDGE_CLEAR_BELOW + 0.1), 3)).toBe(false);
+    // The ridge behind: the boat at 40 m at x = 70 with its beacon back at x = 0 past the ridge.
+    // Going away ahead at 3 m/s: clear; stopped or backing toward it: the warning holds.
+    expect(seabedBetween(70, -40, 0, -40, bed)).toBe(true);
+    expect(ridgeInWay(70, -40, 0, -40, bed, keel(-40), 3)).toBe(false);
+    expect(ridgeInWay(70, -40, 0, -40, bed, keel(-40), 0)).toBe(true);
+    expect(ridgeInWay(70, -40, 0, -40, bed, keel(-40), -2)).toBe(true);
+    // No ridge under the way: no warning whatever the keel.
+    expect(ridgeInWay(0, -20, 59, -20, bed, -100, 3)).toBe(false);
+    expect(() => ridgeInWay(0, -20, 59, -20, bed, Number.NaN, 3)).toThrow(/ridgeInWay: keel/);
   });
 });
 
