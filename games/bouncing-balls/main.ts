@@ -15,7 +15,7 @@
  * aiming arc ends with a red cross at a ball in its way; a heap ball buried under others is lifted to
  * the top of the heap over it first (liftSpot: its arc and its throw start there; with no room there
  * the pull is refused in red), and it leaves the balls it rests on freely (leaveOf). The best
- * round's points are kept in localStorage; when time is up an end card over the box shows the points,
+ * round's points are kept in localStorage, one per court (best.ts); when time is up an end card over the box shows the points,
  * baskets, throws and longest streak, and R or the Play-again button starts a new round. The status
  * row above the box says the goal and shows points, the next basket's multiplier, time and best.
  *
@@ -90,6 +90,7 @@ import {
   type WorldSnapshot,
 } from '@bitphysics/physics';
 import { Graphics, Text } from 'pixi.js';
+import { pageStorage, readBest, writeBest } from './best';
 import {
   addHoop,
   assistPull,
@@ -218,19 +219,8 @@ const HIGH_COLOR = 0x9aa4b5;
 /** The aiming dots of a throw from above the rim's line: lighter than HIGH_COLOR, to stand out on the wall. */
 const HIGH_AIM_COLOR = 0xe6ebf3;
 const GOLD_COLOR = 0xffd23f;
-/** The best round's points (a basket's points: ball x streak), kept in the browser's storage under this key. */
-const BEST_KEY = 'bitphysics.bouncing-balls.best-points';
-
-/** The best score kept in local storage (0 when none, or storage is unavailable). */
-function readBest(): number {
-  try {
-    const v = Number(localStorage.getItem(BEST_KEY));
-    return Number.isInteger(v) && v > 0 ? v : 0;
-  } catch {
-    return 0;
-  }
-}
-let best = readBest();
+/** The best round's points (a basket's points: ball x streak) on this court, kept across reloads (best.ts). */
+let best = readBest(pageStorage(), TALL);
 /**
  * The best points kept when the round began (0 when none): the end card cheers a new best only when
  * the round beats a best there was; a first scoring round is a score to beat, not a record.
@@ -924,15 +914,11 @@ function cheer(score: number, kind: BallKind): void {
   bumpScore();
 }
 
-/** Keeps the round's score as the best if it beats it (in localStorage when it can). */
+/** Keeps the round's score as the best if it beats it (in localStorage when it can, per court: best.ts). */
 function keepBest(): void {
   if (round.points <= best) return;
   best = round.points;
-  try {
-    localStorage.setItem(BEST_KEY, String(best));
-  } catch {
-    /* private mode: kept for this page only */
-  }
+  writeBest(pageStorage(), TALL, best);
 }
 
 /** The net stops the balls it would stop (hoop.ts netContact): every ball, after each step. */

@@ -1949,10 +1949,13 @@ function updateStatus(wx: number, wy: number, wz: number): void {
     // A cube's inertia is the same about every axis, so its ω stays along L and a torque moves ω's tip the way it points.
     const off =
       spins.startedAt < 0 ? Math.hypot(wx - spins.targets[0]![0], wy - spins.targets[0]![1], wz - spins.targets[0]![2]) : spins.off;
+    // A phone's numbers line is one line of about 40 characters: its short form keeps the tolerance and the clock in sight.
     const how =
       spins.held > 0
         ? `holding ${spins.held.toFixed(1)} of ${SPIN_HOLD} s ✓`
-        : `off by ${off.toFixed(2)} rad/s (in the ball: under ${SPIN_TOLERANCE})`;
+        : touch
+          ? `off ${off.toFixed(2)} rad/s (ball: < ${SPIN_TOLERANCE})`
+          : `off by ${off.toFixed(2)} rad/s (in the ball: under ${SPIN_TOLERANCE})`;
     status.set({
       goal: touch
         ? `Magenta arrow onto cyan, hold ${SPIN_HOLD} s (${spins.target + 1} of ${SPIN_TARGETS})`

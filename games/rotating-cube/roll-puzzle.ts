@@ -154,29 +154,32 @@ interface RollState {
 
 /**
  * A shortest route (slides, rolls, quarter turns) that brings the cube to rest on the pad with the
- * face it wants on top, by breadth-first search over (cell, orientation): cells within bed + 1 of the
- * pad that fit in the room, and "away" (anywhere else in the room, where rolls and turns change only
- * the orientation). A slide goes from anywhere to an edge cell (`edgeCells`) or away (with no bed, onto
- * the pad too; with one a slide onto the pad does not count, and one into the tiles stops at their
- * edge); a roll moves one cell (from an edge cell outwards: away; into a cell that does not fit, a
- * wall: not at all); a turn keeps the cell. Rolls away from the bed are taken to have room (the room
- * is 6 m across, the beds 3 m).
- * @param from the cube's cell offset (i, j) from the pad, or null when away (so is a cell beyond the
- * bed's edge or one that does not fit).
+ * face it wants on top, by breadth-first search over (cell, orientation): every cell offset from the
+ * pad that fits in the room, and "away" (off the grid, where rolls and turns change only the
+ * orientation). A slide goes from anywhere to a cell outside the tiles (at the bed's edge or beyond:
+ * `bedSnap` stops one aimed into the tiles at their edge) or away (with no bed, onto the pad too; with
+ * one a slide onto the pad does not count); a roll moves one cell (into a cell that does not fit, a
+ * wall: not at all); a turn keeps the cell. Every cell of the room is in the search, so a roll
+ * towards the pad from a cell beyond the bed's edge counts as the one move it is.
+ * @param from the cube's cell offset (i, j) from the pad, or null when away (so is one that does not fit).
  * @param o its orientation.
  * @returns the moves in order (empty when it already rests there with the face), or null if none reaches it.
  */
 export function moveRoute(p: RollPuzzle, from: readonly [number, number] | null, o: GridOrientation): RollMove[] | null {
   const r = p.bed + 1;
-  // A state's number: its cell (offsets within r of the pad, or away) times 36, plus its orientation by its top and +x faces.
-  const side = 2 * r + 1;
-  const key = (s: RollState): number => (s.cell ? (s.cell[0] + r) * side + s.cell[1] + r : side * side) * 36 + s.o[UP]! * 6 + s.o[0]!;
+  // Offsets up to R from the pad hold every cell that fits in the room (|pad + i| <= reach).
+  const R = Math.max(r, Math.floor(p.reach + Math.max(Math.abs(p.pad[0]), Math.abs(p.pad[1])) + 1e-9));
+  // A state's number: its cell (offsets within R of the pad, or away) times 36, plus its orientation by its top and +x faces.
+  const side = 2 * R + 1;
+  const key = (s: RollState): number => (s.cell ? (s.cell[0] + R) * side + s.cell[1] + R : side * side) * 36 + s.o[UP]! * 6 + s.o[0]!;
   const done = (s: RollState): boolean => !!s.cell && s.cell[0] === 0 && s.cell[1] === 0 && (p.want < 0 || s.o[UP] === p.want);
-  if (from && (Math.max(Math.abs(from[0]), Math.abs(from[1])) > r || !cellFits(p, from[0], from[1]))) from = null;
+  if (from && (Math.max(Math.abs(from[0]), Math.abs(from[1])) > R || !cellFits(p, from[0], from[1]))) from = null;
   const start: RollState = { cell: from, o };
   if (done(start)) return [];
-  const slideTo: ([number, number] | null)[] = [null, ...edgeCells(p)];
-  if (p.bed < 0 && cellFits(p, 0, 0)) slideTo.push([0, 0]);
+  // Slides stop on any cell outside the tiles (with no bed, r = 0: the pad's too).
+  const slideTo: ([number, number] | null)[] = [null];
+  for (let i = -R; i <= R; i++)
+    for (let j = -R; j <= R; j++) if (Math.max(Math.abs(i), Math.abs(j)) >= r && cellFits(p, i, j)) slideTo.push([i, j]);
   /** Each state reached: the state it was reached from and the move. */
   const parent = new Map<number, { from: RollState; move: RollMove } | null>([[key(start), null]]);
   const routeTo = (s: RollState): RollMove[] => {
@@ -206,8 +209,7 @@ export function moveRoute(p: RollPuzzle, from: readonly [number, number] | null,
         else {
           const i = s.cell[0] + STEP[d]![0],
             j = s.cell[1] + STEP[d]![1];
-          if (Math.max(Math.abs(i), Math.abs(j)) > r) options.push([{ cell: null, o: q }, move]);
-          else if (cellFits(p, i, j)) options.push([{ cell: [i, j], o: q }, move]);
+          if (cellFits(p, i, j)) options.push([{ cell: [i, j], o: q }, move]);
         }
       }
       for (const [t, move] of options) {

@@ -561,8 +561,18 @@ export function padMoveRoute(world: PhysicsWorld, body: number, layout: PadLayou
     v = P.z[body]! - p.pad[1];
   const i = Math.round(u),
     j = Math.round(v);
-  return moveRoute(p, [i, j], gridOrientationOf(q.x[body]!, q.y[body]!, q.z[body]!, q.w[body]!));
+  const o = gridOrientationOf(q.x[body]!, q.y[body]!, q.z[body]!, q.w[body]!);
+  // The page asks every frame the cube rests (about 0.2 ms a search): the last answer is kept for its question.
+  const key = `${k} ${i} ${j} ${o.join()}`;
+  if (lastRoute.layout !== layout || lastRoute.key !== key) {
+    lastRoute.layout = layout;
+    lastRoute.key = key;
+    lastRoute.route = moveRoute(p, [i, j], o);
+  }
+  return lastRoute.route ? [...lastRoute.route] : null;
 }
+/** padMoveRoute's last question (the layout, then pad, cell and orientation) and its answer. */
+const lastRoute: { layout: PadLayout | null; key: string; route: RollMove[] | null } = { layout: null, key: '', route: null };
 /** The par of pad `k` of `layout` for `body` where it is now in `world`: the length of `padMoveRoute`, or -1 if none reaches it. */
 export function padMovePar(world: PhysicsWorld, body: number, layout: PadLayout, k: number): number {
   return padMoveRoute(world, body, layout, k)?.length ?? -1;

@@ -96,6 +96,23 @@ describe('bouncing balls', () => {
     expect(g.errors).toEqual([]);
   });
 
+  it("phone 390 x 844: the tall court's best is read back after a reload, apart from the wide court's", async () => {
+    const g = await h.openGame('bouncing-balls', { viewport: { width: 390, height: 844 }, touch: true, query: { count: 8 } });
+    type Best = { best(): number; statusText(): string };
+    await g.waitFor(() => typeof (window.game as unknown as Partial<Best> | undefined)?.best === 'function' || null, null);
+    // The wide court's best (20) and the tall court's (8), as two earlier visits kept them.
+    await g.page.evaluate(() => {
+      localStorage.setItem('bitphysics.bouncing-balls.best-points', '20');
+      localStorage.setItem('bitphysics.bouncing-balls.best-points.tall', '8');
+    });
+    await g.page.reload();
+    await g.waitFor(() => typeof (window.game as unknown as Partial<Best> | undefined)?.best === 'function' || null, null);
+    expect(await g.page.evaluate(() => (window.game as unknown as Best).best())).toBe(8);
+    expect(await g.waitFor(() => /Best 8\b/.test((window.game as unknown as Best).statusText()) || null, null)).toBe(true);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
   it('a click adds exactly one ball, drawn on the next frame, and does not start the hoop clock', async () => {
     const g = await open();
     const before = await g.stats();

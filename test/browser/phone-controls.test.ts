@@ -600,6 +600,36 @@ describe('phone controls', () => {
     await g.close();
   });
 
+  it("rotating cube: the spin round's numbers line fits the phone's width while the arrows are far apart", async () => {
+    // The numbers line is one line, cut with an ellipsis where it is wider than the screen: "off by
+    // 1.55 rad/s (in the ball: under 0…" hid the tolerance and the clock.
+    const g = await h.openGame('rotating-cube', { ...PHONE, query: { mode: 'cube' } });
+    // Spun far off the first target (about 11 rad/s): "off" with two digits before the point is the
+    // widest the line gets (the page's own spin starts well under that).
+    // The hooks are exposed at the end of the page's script, after its first status line.
+    await g.waitFor(() => typeof (window.game as unknown as { body?: unknown }).body === 'function' || null, null);
+    await g.page.evaluate(() => {
+      const game = window.game as unknown as {
+        body(): number;
+        world: { components: { AngularVelocity: Record<'x' | 'y' | 'z', Float64Array> } };
+      };
+      const W = game.world.components.AngularVelocity;
+      W.x[game.body()] = 0;
+      W.y[game.body()] = -9;
+      W.z[game.body()] = 6;
+    });
+    const shown = await g.waitFor(() => {
+      const el = document.querySelector<HTMLElement>('[data-hud="challenge"] [data-hud="numbers"]');
+      const text = el?.textContent ?? '';
+      return /off.* \d\d\.\d\d/.test(text) ? { text, over: el!.scrollWidth - el!.clientWidth } : null;
+    }, null);
+    // Whole: the tolerance and the clock show (scrollWidth equals clientWidth when nothing is cut).
+    expect(shown.text).toMatch(/0\.3.* · \d+\.\d s$/);
+    expect(shown.over).toBe(0);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
+
   it("rotating cube: the flip round's end card is a sheet at the stage's foot that leaves the box in sight", async () => {
     const g = await h.openGame('rotating-cube', { ...PHONE, query: { mode: 'flip' } });
     // The round run out (20 s of world time, stepped while paused so the box holds still), lost. The
