@@ -287,6 +287,48 @@ describe('addShape3D', () => {
     expect(shapes3DOf(world)!.first[slotOf(body)]).toBe(0);
   });
 
+  test('shapes of one geometry share one polyhedron, so adding and removing boxes keeps the hull list bounded', () => {
+    const world = createPhysicsWorld({ dimensions: 3, capacity: 100 });
+    const hulls = () => shapes3DOf(world)!.hulls.length;
+    // 20 rounds of 10 same-size boxes added and removed: before sharing, every box pushed a hull of its
+    // own and the list held 200 after the rounds (a long-running game spawning crates grew without bound).
+    for (let round = 0; round < 20; round++) {
+      const bodies: number[] = [];
+      for (let i = 0; i < 10; i++) {
+        const b = addBody(world, { position: [2 * i, 1, 0] });
+        addShape3D(world, b, { type: 'box', halfExtents: [0.5, 0.25, 0.5] });
+        bodies.push(b);
+      }
+      for (const b of bodies) removeBody(world, b);
+    }
+    expect(hulls()).toBe(1);
+    const a = addBody(world, {}),
+      b = addBody(world, {});
+    const sa = addShape3D(world, a, { type: 'box', halfExtents: [0.5, 0.25, 0.5] });
+    const sb = addShape3D(world, b, { type: 'box', halfExtents: [0.5, 0.25, 0.5] });
+    expect(hullOfShape3D(world, sa)).toBe(hullOfShape3D(world, sb));
+    // Other geometries get their own: another size, a cylinder (twice), a point cloud (twice).
+    const sc = addShape3D(world, a, { type: 'box', halfExtents: [0.5, 0.5, 0.5] });
+    expect(hullOfShape3D(world, sc).vertices).toContain(0.5);
+    expect(hullOfShape3D(world, sc)).not.toBe(hullOfShape3D(world, sa));
+    addShape3D(world, a, { type: 'cylinder', radius: 0.3, halfHeight: 0.4 });
+    addShape3D(world, b, { type: 'cylinder', radius: 0.3, halfHeight: 0.4 });
+    const cloud = cubeCloud(0.5, 10);
+    const h1 = addShape3D(world, a, { type: 'hull', vertices: cloud });
+    const h2 = addShape3D(world, b, { type: 'hull', vertices: cloud.map((p) => [...p]) });
+    expect(hullOfShape3D(world, h1)).toBe(hullOfShape3D(world, h2));
+    expect(hulls()).toBe(4);
+    // A call that throws after the geometry was checked (a bad density) stores no hull.
+    expect(() => addShape3D(world, a, { type: 'box', halfExtents: [1, 2, 3], density: -1 })).toThrow('addShape3D: density');
+    expect(hulls()).toBe(4);
+    // A restored copy shares as the original does.
+    const copy = createPhysicsWorld({ dimensions: 3, capacity: 100 });
+    restore(copy, snapshot(world));
+    const c = addBody(copy, {});
+    addShape3D(copy, c, { type: 'box', halfExtents: [0.5, 0.25, 0.5] });
+    expect(shapes3DOf(copy)!.hulls.length).toBe(4);
+  });
+
   test('bad input gets clear errors and changes nothing', () => {
     const world = createPhysicsWorld({ dimensions: 3 });
     const body = addBody(world, {});

@@ -2,7 +2,7 @@ import { addComponent, entityExists, hasComponent, removeEntity } from 'bitecs';
 import { install3D } from '../collision/install-3d.js';
 import { multiplyQuaternions, rotateVector, rotationMatrix } from '../math/quaternion.js';
 import { shapeEdits } from '../shapes/edits-3d.js';
-import { type Hull, quickhull } from '../shapes/hull-3d.js';
+import { type Hull, MAX_HULL_INPUT, quickhull } from '../shapes/hull-3d.js';
 import {
   addMovedInertia,
   boxMass,
@@ -95,10 +95,33 @@ interface Geometry {
   hx: number;
   hy: number;
   hz: number;
+  /** The polyhedron it collides as (null for spheres and capsules), and its key in the store's `hullIndex`. */
   hull: Hull | null;
+  key: string;
 }
 
-function geometryOf(where: string, o: Shape3DOptions): Geometry {
+/**
+ * The polyhedron of geometry `key`: the world's own when a shape of that geometry was added before
+ * (shapes of one geometry share it, see Shape3DStore.hulls), else `make()`'s, stored by `storeHull`
+ * once the shape is added.
+ */
+function sharedHull(s: Shape3DStore | undefined, key: string, make: () => Hull): Hull {
+  const i = s?.hullIndex.get(key);
+  return i === undefined ? make() : s!.hulls[i]!;
+}
+
+/** Index into `s.hulls` of geometry g's polyhedron, stored there (and in `hullIndex`) if new. */
+function storeHull(s: Shape3DStore, g: Geometry): number {
+  let i = s.hullIndex.get(g.key);
+  if (i === undefined) {
+    i = s.hulls.length;
+    s.hulls.push(g.hull!);
+    s.hullIndex.set(g.key, i);
+  }
+  return i;
+}
+
+function geometryOf(where: string, o: Shape3DOptions, s: Shape3DStore | undefined): Geometry {
   const t = o.type;
   if (!(typeof t === 'string' && Object.hasOwn(APPLIES, t)))
     throw new TypeError(`${where}: type must be one of 'sphere', 'box', 'capsule', 'cylinder', 'hull', got ${describe(t)}`);
@@ -107,30 +130,46 @@ function geometryOf(where: string, o: Shape3DOptions): Geometry {
   switch (t) {
     case 'sphere':
       assertPositive(where, 'radius', o.radius);
-      return { kind: Shape3DKind.Sphere, r: o.radius, hx: 0, hy: 0, hz: 0, hull: null };
+      return { kind: Shape3DKind.Sphere, r: o.radius, hx: 0, hy: 0, hz: 0, hull: null, key: '' };
     case 'box': {
       assertVector(where, 'halfExtents', o.halfExtents, 3);
       const h = o.halfExtents!;
       for (let i = 0; i < 3; i++) assertPositive(where, `halfExtents[${i}]`, h[i]);
-      const corners: number[][] = [];
-      for (const x of [-h[0]!, h[0]!]) for (const y of [-h[1]!, h[1]!]) for (const z of [-h[2]!, h[2]!]) corners.push([x, y, z]);
-      return { kind: Shape3DKind.Box, r: 0, hx: h[0]!, hy: h[1]!, hz: h[2]!, hull: quickhull(where, corners) };
+      const key = `box ${h[0]} ${h[1]} ${h[2]}`;
+      const hull = sharedHull(s, key, () => {
+        const corners: number[][] = [];
+        for (const x of [-h[0]!, h[0]!]) for (const y of [-h[1]!, h[1]!]) for (const z of [-h[2]!, h[2]!]) corners.push([x, y, z]);
+        return quickhull(where, corners);
+      });
+      return { kind: Shape3DKind.Box, r: 0, hx: h[0]!, hy: h[1]!, hz: h[2]!, hull, key };
     }
     case 'capsule':
-    case 'cylinder':
+    case 'cylinder': {
       assertPositive(where, 'radius', o.radius);
       assertPositive(where, 'halfHeight', o.halfHeight);
+      const key = `cylinder ${o.radius} ${o.halfHeight}`;
       return {
         kind: t === 'capsule' ? Shape3DKind.Capsule : Shape3DKind.Cylinder,
         r: o.radius,
         hx: 0,
         hy: o.halfHeight,
         hz: 0,
-        hull: t === 'cylinder' ? cylinderHull(where, o.radius, o.halfHeight) : null,
+        hull: t === 'cylinder' ? sharedHull(s, key, () => cylinderHull(where, o.radius!, o.halfHeight!)) : null,
+        key: t === 'cylinder' ? key : '',
       };
-    case 'hull':
+    }
+    case 'hull': {
       if (o.vertices === undefined) throw new TypeError(`${where}: vertices must be given for a hull, got undefined`);
-      return { kind: Shape3DKind.Hull, r: 0, hx: 0, hy: 0, hz: 0, hull: quickhull(where, o.vertices) };
+      const v = o.vertices;
+      // The key holds the points only once they are known to be an array of arrays (quickhull checks
+      // the rest); a cloud that is not one is never shared.
+      const key =
+        Array.isArray(v) && v.length <= MAX_HULL_INPUT && v.every((p) => Array.isArray(p) || ArrayBuffer.isView(p))
+          ? `hull ${v.map((p) => Array.from(p as ArrayLike<number>).join(' ')).join(',')}`
+          : '';
+      const hull = key === '' ? quickhull(where, v) : sharedHull(s, key, () => quickhull(where, v));
+      return { kind: Shape3DKind.Hull, r: 0, hx: 0, hy: 0, hz: 0, hull, key };
+    }
   }
 }
 
@@ -199,7 +238,7 @@ export function addShape3D(world: PhysicsWorld, body: number, options: Shape3DOp
   }
   assertOptions(where, options, OPTIONS);
   assertOptionalBoolean(where, 'sensor', options.sensor);
-  const g = geometryOf(where, options);
+  const g = geometryOf(where, options, shapes3DOf(world));
   let ox = 0,
     oy = 0,
     oz = 0,
@@ -269,10 +308,7 @@ export function addShape3D(world: PhysicsWorld, body: number, options: Shape3DOp
   s.hy[e] = g.hy;
   s.hz[e] = g.hz;
   s.radius[e] = g.r;
-  if (g.hull !== null) {
-    s.hull[e] = s.hulls.length;
-    s.hulls.push(g.hull);
-  } else s.hull[e] = -1;
+  s.hull[e] = g.hull === null ? -1 : storeHull(s, g);
   let reach = g.r + g.hy;
   if (g.hull !== null) {
     const V = g.hull.vertices;
@@ -420,7 +456,9 @@ export function shapes3DOfBody(world: PhysicsWorld, body: number): number[] {
 }
 
 /**
- * The convex hull a hull shape keeps (vertices in the shape frame). @throws RangeError on a handle that is not a hull shape.
+ * The convex hull a hull shape keeps (vertices in the shape frame); boxes and cylinders answer with the
+ * polyhedron they collide as. Shapes of one geometry share one hull object (see Shape3DStore.hulls), so
+ * it is to be read, not changed. @throws RangeError on a handle that is not a hull, box or cylinder shape.
  * @category Shapes
  */
 export function hullOfShape3D(world: PhysicsWorld, shape: number): Hull {

@@ -45,7 +45,14 @@ export interface Shape3DStore {
   reach: Float64Array;
   /** Index into `hulls` of the polyhedron a hull, box or cylinder collides as (-1 for spheres and capsules). Hull vertices are in the shape frame. */
   hull: Int32Array;
+  /**
+   * The distinct polyhedra of the world's shapes, each kept once: shapes of one geometry (boxes of the
+   * same half extents, cylinders of the same radius and half height, hulls of the same point cloud)
+   * share one entry, so the list grows with the geometries used, not with the shapes added and removed.
+   */
   hulls: Hull[];
+  /** Index into `hulls` of each geometry's polyhedron, by its key (bodies/shapes-3d.ts hullKey). */
+  hullIndex: Map<string, number>;
   /** Density, kg/m^3 (>= 0). */
   density: Float64Array;
   /** Friction coefficient (>= 0) and restitution ([0, 1]). */
@@ -95,6 +102,7 @@ function createStore(capacity: number): Shape3DStore {
     reach: f(),
     hull,
     hulls: [],
+    hullIndex: new Map(),
     density: f(),
     friction: f(),
     restitution: f(),
