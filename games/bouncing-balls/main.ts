@@ -2470,6 +2470,9 @@ function drawPointer(): void {
 
 const hoopLayer = new Graphics({ label: 'hoop' });
 app.stage.addChild(hoopLayer);
+// The aiming labels over the hoop (moved up the stage): an arc cut at the net or the board has its
+// words beside the hoop, and the rim and the net drawn over them hid "hits" of "hits the net".
+app.stage.addChild(holdLabel, cutLabel);
 const confetti = new Graphics({ label: 'confetti' });
 const popText = new Text({
   text: '+1',
