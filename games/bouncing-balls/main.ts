@@ -2958,8 +2958,9 @@ if (touchHint) {
 /** Keeps the touch hint card in the middle of the stand under the floor, or its foot 4 px over the canvas's foot if the stand is lower than the card (while it is on the page). */
 function placeTouchHint(): void {
   const shown = !!touchHint?.isConnected && !!touchHint.offsetParent;
-  // Not under the Play-again button when the round is over (it floats over the stand then).
-  standLabel.visible = standRoom && !shown && round.phase !== 'over';
+  // Not under the Play-again button when the round is over (it floats over the stand then), nor
+  // while a pull is under way: the pull's band and the finger's power ring are drawn there.
+  standLabel.visible = standRoom && !shown && round.phase !== 'over' && !(pointerId !== -1 && dragged);
   if (!shown) return;
   const top = canvas.getBoundingClientRect().top - touchHint!.offsetParent!.getBoundingClientRect().top;
   const h = touchHint!.offsetHeight,

@@ -1893,10 +1893,20 @@ describe('bouncing balls: cancelling, full-power pulls and the end of a round mi
   describe('desktop 1280 x 800, 8 balls, one page', () => {
     const page = sharedPage(() => h, 'bouncing-balls', { viewport: { width: 1280, height: 800 }, query: { count: 8 } });
 
-    it('desktop 1280 x 800, mouse: a pull taken back onto the press point shows "release here to cancel" and throws nothing', async () => {
+    it('desktop 1280 x 800, mouse: a pull taken back onto the press point shows "release here to cancel" and throws nothing; the stand\'s words hide under a pull', async () => {
       const g = page();
       const n0 = await clearAround(g, 3, 4);
       const from = await g.worldToPage(3, 4);
+      // The stand's "room to pull back into" words: shown, but not under a pull's band.
+      const standWords = () =>
+        g.page.evaluate(
+          () =>
+            (window.game as unknown as { app: { stage: { children: { text?: string; visible: boolean }[] } } }).app.stage.children.find(
+              (c) => c.text === '↓ room to pull back into ↓',
+            )?.visible,
+        );
+      await g.frames(2);
+      expect(await standWords()).toBe(true);
       const m = g.page.mouse;
       await m.move(from.x, from.y);
       await m.down();
@@ -1905,12 +1915,14 @@ describe('bouncing balls: cancelling, full-power pulls and the end of a round mi
       const pulled = await aimState(g);
       expect(pulled.arc).toBeGreaterThan(6);
       expect(pulled.label).not.toBe('release here to cancel');
+      expect(await standWords()).toBe(false);
       // Back to 4 px from the press point: inside the cancel zone (15 px, or the ball's drawn radius).
       await m.move(from.x - 3, from.y + 3, { steps: 6 });
       await g.frames(2);
       expect(await aimState(g)).toEqual({ arc: 0, label: 'release here to cancel', aiming: true });
       await m.up();
       await g.frames(3);
+      expect(await standWords()).toBe(true);
       const after = await g.page.evaluate(() => {
         const game = window.game as unknown as AimGame;
         return { balls: game.ballIds().length, shots: game.round().shots, aiming: game.aiming() };
