@@ -25,7 +25,7 @@
  * the pull, faster the longer it is, hoop.ts slingVelocity: the height it reaches grows evenly over
  * the second half of the pull), with a power gauge round the ball and a dotted arc of its flight
  * while pulling (hoop.ts throwPath: over its top and down to just above the rim's height, arcSeconds;
- * at least AIM_SECONDS of it, twice that in the warm-up before the first basket, 1.5 times as long on
+ * at least AIM_SECONDS of it, the same all round, 1.5 times as long on
  * a phone held upright (TALL_AIM_SCALE); fading out, up to its first touch of a ball, a wall, a ramp
  * or the hoop; the player judges the bounce and the last stretch). Each basketball thrown or dropped fades out once it has come to rest (MAX_LOOSE). A pull taken back
  * to within CANCEL_PULL of its press point ("release here to cancel") and let go throws nothing; the
@@ -965,12 +965,20 @@ function markTouches(world: PhysicsWorld): void {
   });
 }
 
+/**
+ * Game seconds stepped since the page opened, across rounds and resets (world.time starts again at a
+ * reset): the taking-turns hints' clock (updateStatus), so they wait while the game is paused and a
+ * test steps through them instead of waiting for the wall clock.
+ */
+let playSeconds = 0;
+
 /** Which impacts are heard (knocks.ts): the loudest few a step, a cooldown per body, a budget a second. */
 const knocks = createKnockLimiter(KNOCK_LIMITS);
 
 /** One step, then a knock for each impact the limiter keeps: loudness from its impulse, the harder of the two materials. */
 function stepWorld(world: PhysicsWorld): void {
   step(world);
+  playSeconds += world.dt;
   markTouches(world);
   applyNet(world);
   playHoop(world);
@@ -1874,12 +1882,11 @@ function aimFlight(): number[] {
 }
 
 /**
- * The least of a throw's flight its aiming arc shows, s (arcSeconds): AIM_SECONDS, or AIM_SECONDS_WARMUP in the
- * warm-up (before the round's first basket), where a first-timer learns how the pull throws; both
- * TALL_AIM_SCALE times longer in the tall box (a phone held upright).
+ * The least of a throw's flight its aiming arc shows, s (arcSeconds): AIM_SECONDS, the same in the
+ * warm-up and once the clock runs, TALL_AIM_SCALE times longer in the tall box (a phone held upright).
  */
 function aimSeconds(): number {
-  return (round.phase === 'ready' ? AIM_SECONDS_WARMUP : AIM_SECONDS) * (TALL ? TALL_AIM_SCALE : 1);
+  return AIM_SECONDS * (TALL ? TALL_AIM_SCALE : 1);
 }
 /**
  * How much longer the aiming arc is in the tall box: a phone draws the court at some 36 px a metre
@@ -1888,14 +1895,14 @@ function aimSeconds(): number {
  */
 const TALL_AIM_SCALE = 1.5;
 /**
- * The aiming arc's least length once the clock runs, s of flight: about the first third of a basket's
- * flight (a basket from the natural starts of reach.ts reaches the rim 0.8 to 2 s after its throw,
- * 1.7 s the median), for a throw that does not come down to the rim's height sooner (arcSeconds). It
- * ends sooner at its first touch: a ball, a wall, a ramp or the hoop (aimPath).
+ * The aiming arc's least length, s of flight, in the warm-up and once the clock runs alike: most of
+ * a basket's flight (a basket from the natural starts of reach.ts reaches the rim 0.8 to 2 s after its
+ * throw, 1.7 s the median), for a throw that does not come down to the rim's height sooner
+ * (arcSeconds). It ends sooner at its first touch: a ball, a wall, a ramp or the hoop (aimPath). Cut
+ * to 0.6 s once the clock ran, a flat throw's arc ended well short of the hoop and a stranger
+ * guessed the rest of the round ("the aim line is shortened" said so, and did not help).
  */
-const AIM_SECONDS = 0.6;
-/** The aiming arc's least length in the warm-up (before the round's first basket), s of flight: twice AIM_SECONDS. */
-const AIM_SECONDS_WARMUP = 1.2;
+const AIM_SECONDS = 1.2;
 /** The longest flight `aimFlight` and the test hook `aimFrom` follow, s. */
 const FLIGHT_SECONDS = 2.5;
 
@@ -2420,9 +2427,6 @@ function drawPointer(): void {
     const lifted = lift !== null && (lift[0] !== P.x[slotOf(pressed)] || lift[1] !== P.y[slotOf(pressed)]);
     label = `${lifted ? 'lifted · ' : ''}${label} · ${points} ${points === 1 ? 'point' : 'points'}`;
   } else label = `new ball · ${label} · ${BALL_POINTS.basketball} point`;
-  // The arc is cut to AIM_SECONDS once the clock runs (after the first basket): said on the next
-  // throws' labels until the second basket, so a shorter line reads as the game's rule, not a fault.
-  if (round.phase !== 'ready' && round.score <= 1) label += `\naim line shortened: the clock runs`;
   showHoldLabel(label, ox, oy - gr - 6);
   if (cut !== null) {
     const sx = cam.toScreenX(cut.x),
@@ -2466,6 +2470,9 @@ function drawPointer(): void {
 
 const hoopLayer = new Graphics({ label: 'hoop' });
 app.stage.addChild(hoopLayer);
+// The aiming labels over the hoop (moved up the stage): an arc cut at the net or the board has its
+// words beside the hoop, and the rim and the net drawn over them hid "hits" of "hits the net".
+app.stage.addChild(holdLabel, cutLabel);
 const confetti = new Graphics({ label: 'confetti' });
 const popText = new Text({
   text: '+1',
@@ -2951,8 +2958,9 @@ if (touchHint) {
 /** Keeps the touch hint card in the middle of the stand under the floor, or its foot 4 px over the canvas's foot if the stand is lower than the card (while it is on the page). */
 function placeTouchHint(): void {
   const shown = !!touchHint?.isConnected && !!touchHint.offsetParent;
-  // Not under the Play-again button when the round is over (it floats over the stand then).
-  standLabel.visible = standRoom && !shown && round.phase !== 'over';
+  // Not under the Play-again button when the round is over (it floats over the stand then), nor
+  // while a pull is under way: the pull's band and the finger's power ring are drawn there.
+  standLabel.visible = standRoom && !shown && round.phase !== 'over' && !(pointerId !== -1 && dragged);
   if (!shown) return;
   const top = canvas.getBoundingClientRect().top - touchHint!.offsetParent!.getBoundingClientRect().top;
   const h = touchHint!.offsetHeight,
@@ -3039,10 +3047,10 @@ function bumpScore(): void {
   el.classList.add('bb-bump');
 }
 
-/** How long each of the taking-turns hints shows, ms (updateStatus): long enough to read. */
-const TEACH_MS = 6000;
-/** Which taking-turns hint shows (0-3) and since when (performance.now(), ms). */
-const teachTurn = { turn: 0, at: performance.now() };
+/** How long each of the taking-turns hints shows, s of game time (updateStatus, playSeconds): long enough to read. */
+const TEACH_SECONDS = 6;
+/** Which taking-turns hint shows (0-3) and since when (playSeconds, s). */
+const teachTurn = { turn: 0, at: 0 };
 
 /** Writes the status row (goal, baskets, time, best, a hint) when it changed, and shows Play again when time is up. */
 function updateStatus(): void {
@@ -3066,11 +3074,11 @@ function updateStatus(): void {
                 : `${plural(round.perHoop - round.atHoop, 'basket', 'baskets')} here, then the hoop moves`;
   const numbers = `Points ${round.points} · ×${streakMultiplier(round.streak)} · Time ${secs} s · Best ${best}`;
   // The last throw's rule break (ruleHint) stays until the next throw; otherwise, while playing, the
-  // hint takes turns (TEACH_MS each, held while a press is down so it can be read while aiming)
-  // between the heap's balls, the streak and the bonus shots.
-  const now = performance.now();
-  if (pointerId !== -1) teachTurn.at = Math.max(teachTurn.at, now - TEACH_MS);
-  else if (now - teachTurn.at >= TEACH_MS) {
+  // hint takes turns (TEACH_SECONDS of game time each, held while a press is down so it can be read
+  // while aiming) between the heap's balls, the streak and the bonus shots.
+  const now = playSeconds;
+  if (pointerId !== -1) teachTurn.at = Math.max(teachTurn.at, now - TEACH_SECONDS);
+  else if (now - teachTurn.at >= TEACH_SECONDS) {
     teachTurn.turn = (teachTurn.turn + 1) % 4;
     teachTurn.at = now;
   }
@@ -3324,7 +3332,7 @@ shell.expose({
   /**
    * The dotted arc drawn while pulling a throw: its points, m (flat x, y pairs), or [] when not pulling
    * or in the cancel zone: the flight over its top and down to 0.4 m over the rim's height (at least
-   * 0.6 s of it, 1.2 s before the round's first basket, 1.5 times that in the tall box; at most 2.5 s;
+   * 1.2 s of it, 1.5 times that in the tall box; at most 2.5 s;
    * to 0.2 s past its top if that is under the rim), up to its first touch of a ball, a wall, a ramp,
    * the box's top or the hoop.
    */
@@ -3339,13 +3347,13 @@ shell.expose({
     const cut = path.length > 0 ? arcCut(currentThrow(), path, pressBall) : null;
     return cut && { kind: cut.kind, x: cut.x, y: cut.y, words: cut.soon ? '' : cutWords(cut.kind) };
   },
-  /** Which of the status row's taking-turns hints shows (0-3): each TEACH_MS (6 s), held while a press is down. */
+  /** Which of the status row's taking-turns hints shows (0-3): each TEACH_SECONDS (6 s of game time), held while a press is down. */
   hintTurn: (): number => teachTurn.turn,
   /** Bumps the status row's numbers line as a basket does (grows it, kept inside the row's width). */
   bumpScore: (): void => bumpScore(),
   /** The whole predicted flight of the throw being pulled (2.5 s, two bounces; the arc shows its start): points, m, or [] as aimPath. */
   aimFlight: (): number[] => aimFlight(),
-  /** The least of a throw's flight the aiming arc shows now, s (1.2 in the warm-up before the first basket, then 0.6; 1.5 times that in the tall box). */
+  /** The least of a throw's flight the aiming arc shows, s (1.2, in the warm-up and after the first basket alike; 1.5 times that in the tall box). */
   aimSeconds: (): number => aimSeconds(),
   /** The round's last throw (the clock ran out during its pull): whether its pull is under way, and its ball (0 when none). */
   lastThrow: () => ({ ...lastCall }),

@@ -118,8 +118,15 @@ export const HELM = Object.freeze({
    * tanks' 91 kN take the 110 t boat to it in 1.6 s; drag k v^2 at 10 m/s is 240 kN).
    */
   diveSpeed: 10,
-  /** Vertical speed asked for while Rise is held, m/s (less than diving: the boat must slow before the surface). */
-  climbSpeed: 8,
+  /**
+   * Vertical speed asked for while Rise is held, m/s: as much as diving, so a Rise key climbs as
+   * briskly as Dive dives (a key at rest 5 m/s both ways, at full ahead about 8; at 8 m/s asked the
+   * climb ran 4 and 6.4 m/s, which strangers read as a sluggish rise). The same honest forces carry
+   * it: the thrusters' 600 kN, the tanks blown lighter than neutral (the weight that carries the
+   * boat against drag, k v^2 = 240 kN at 10 m/s, plus riseExcess), against the drag; near the surface
+   * the climb asked slows to surfacingSpeed, so the tanks refill and the boat comes up as gently.
+   */
+  climbSpeed: 10,
   /**
    * Most tank fill the helm adds (each tank) to speed a dive up: all of it, so a held Dive floods the
    * tanks full (91 kN more than neutral) at once, on top of the thrusters, until the boat runs at the
@@ -283,7 +290,7 @@ export function screwPush(mass: number, u: number, throttle: number, vy = 0, ang
 
 /**
  * The share of full Dive / Rise (`HelmInput.heave`) a Dive or Rise key asks for at rest: a steady 0.5
- * (5 m/s down, 4 m/s up), from the first moment it is held, so the depth gone grows in step with
+ * (5 m/s down, 5 m/s up), from the first moment it is held, so the depth gone grows in step with
  * the time held (from a hover about 4.6 m for 1 s, 9.8 m for 2 s, 19.8 m for 4 s) and a short tap
  * still moves the depth order by most of a metre. The thrusters' 5.5 m/s^2 take the boat to 90 % of
  * it in 0.9 s, and let go it runs on 2.2 m and stops within 1.1 s (at 6 m/s: 1.05 s, 3.2 m and
@@ -296,7 +303,7 @@ export function screwPush(mass: number, u: number, throttle: number, vy = 0, ang
 export const KEY_HEAVE_SHARE = 0.5;
 
 /**
- * The share a Dive or Rise key asks for at `KEY_HEAVE_FULL_SPEED` ahead or faster: 0.8 (8 m/s down).
+ * The share a Dive or Rise key asks for at `KEY_HEAVE_FULL_SPEED` ahead or faster: 0.8 (8 m/s down or up).
  * At full ahead a boat diving at 6 m/s ran 18 m ahead for 5 m down in 1.5 s, a dive
  * slow to answer. (All of it, 10 m/s, takes a pilot on the keys into more mines and seabed slopes:
  * scripts/submarine-pilot.mjs.)

@@ -679,7 +679,9 @@ describe('bouncing balls: the hoop game', () => {
     expect(under.top).toBeGreaterThan(under.rim - 1.1 - 0.05);
     // The predicted flight bounces: pressed low in the box's right half and pulled left and down, the
     // throw goes right into the wall and the flight comes back off it. Once the clock runs the arc drawn
-    // is only the flight's start: its first 0.6 s, point for point, up to its first touch (the wall).
+    // is the flight's start as in the warm-up: at least its first 1.2 s, point for point, up to its
+    // first touch (the wall). (Cut to 0.6 s once the clock ran, with "aim line shortened" on the label,
+    // a stranger guessed the rest: issue 34.)
     // It no longer goes on through the bounce: a stranger wiggled the pull until the bounce's dots went
     // through the hoop, and reading the bounce is the player's to do.
     const press = await g.worldToPage(9, 2),
@@ -689,16 +691,25 @@ describe('bouncing balls: the hoop game', () => {
     await g.page.mouse.move(pull.x, pull.y, { steps: 4 });
     const aim = await g.page.evaluate(() => {
       const game = window.game as unknown as HoopGame;
-      return { shown: game.aimPath(), flight: game.aimFlight(), seconds: game.aimSeconds(), phase: game.round().phase };
+      return {
+        shown: game.aimPath(),
+        flight: game.aimFlight(),
+        seconds: game.aimSeconds(),
+        phase: game.round().phase,
+        label: (game as unknown as { aimLabel(): string }).aimLabel(),
+      };
     });
     await g.page.mouse.up();
     const xs = aim.flight.filter((_, i) => i % 2 === 0);
     expect(Math.max(...xs)).toBeGreaterThan(15.5);
     expect(xs.at(-1)!).toBeLessThan(Math.max(...xs) - 1);
-    expect(aim).toMatchObject({ phase: 'playing', seconds: 0.6 });
-    // A point every 4 steps of 1/60 s from the throw: 0.6 s is 10 points at most (one more a touch).
+    expect(aim).toMatchObject({ phase: 'playing', seconds: 1.2 });
+    expect(aim.label).toMatch(/power \d+%/);
+    expect(aim.label).not.toMatch(/shortened/);
+    // A point every 4 steps of 1/60 s from the throw: 1.2 s is 19 points at most (one more a touch);
+    // the wall ends this one sooner.
     expect(aim.shown.length).toBeGreaterThanOrEqual(8);
-    expect(aim.shown.length).toBeLessThanOrEqual(2 * 12);
+    expect(aim.shown.length).toBeLessThanOrEqual(2 * 21);
     expect(aim.shown.length).toBeLessThan(aim.flight.length - 4);
     for (let i = 0; i < aim.shown.length; i++) expect(aim.shown[i]).toBeCloseTo(aim.flight[i]!, 9);
     // Right to the wall and ending there: its last point is its rightmost, at the wall, and none
@@ -1531,8 +1542,9 @@ describe('bouncing balls: the hoop game', () => {
       await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: [{ x: from.x, y: from.y, id: 1 }] });
       const seen: { field: number; hint: string; cut: (string | null)[] }[] = [];
       // Between moves a quarter of a second of world time is stepped in the page, then two frames
-      // drawn, as the row is written on each frame; 40 moves, past the hints' 6 s turn.
-      for (let i = 0; i < 40; i++) {
+      // drawn, as the row is written on each frame; 28 moves, 7 s, past the hints' 6 s turn (of game
+      // time: main.ts playSeconds).
+      for (let i = 0; i < 28; i++) {
         if (i === 5) await g.page.evaluate(() => (window.game as unknown as HoopGame).shoot(1, 2, 0, 0));
         await cdp.send('Input.dispatchTouchEvent', {
           type: 'touchMove',
@@ -1881,10 +1893,20 @@ describe('bouncing balls: cancelling, full-power pulls and the end of a round mi
   describe('desktop 1280 x 800, 8 balls, one page', () => {
     const page = sharedPage(() => h, 'bouncing-balls', { viewport: { width: 1280, height: 800 }, query: { count: 8 } });
 
-    it('desktop 1280 x 800, mouse: a pull taken back onto the press point shows "release here to cancel" and throws nothing', async () => {
+    it('desktop 1280 x 800, mouse: a pull taken back onto the press point shows "release here to cancel" and throws nothing; the stand\'s words hide under a pull', async () => {
       const g = page();
       const n0 = await clearAround(g, 3, 4);
       const from = await g.worldToPage(3, 4);
+      // The stand's "room to pull back into" words: shown, but not under a pull's band.
+      const standWords = () =>
+        g.page.evaluate(
+          () =>
+            (window.game as unknown as { app: { stage: { children: { text?: string; visible: boolean }[] } } }).app.stage.children.find(
+              (c) => c.text === '↓ room to pull back into ↓',
+            )?.visible,
+        );
+      await g.frames(2);
+      expect(await standWords()).toBe(true);
       const m = g.page.mouse;
       await m.move(from.x, from.y);
       await m.down();
@@ -1893,12 +1915,14 @@ describe('bouncing balls: cancelling, full-power pulls and the end of a round mi
       const pulled = await aimState(g);
       expect(pulled.arc).toBeGreaterThan(6);
       expect(pulled.label).not.toBe('release here to cancel');
+      expect(await standWords()).toBe(false);
       // Back to 4 px from the press point: inside the cancel zone (15 px, or the ball's drawn radius).
       await m.move(from.x - 3, from.y + 3, { steps: 6 });
       await g.frames(2);
       expect(await aimState(g)).toEqual({ arc: 0, label: 'release here to cancel', aiming: true });
       await m.up();
       await g.frames(3);
+      expect(await standWords()).toBe(true);
       const after = await g.page.evaluate(() => {
         const game = window.game as unknown as AimGame;
         return { balls: game.ballIds().length, shots: game.round().shots, aiming: game.aiming() };
@@ -2322,29 +2346,40 @@ describe('bouncing balls: cancelling, full-power pulls and the end of a round mi
     await g.close();
   });
 
-  it('phone 390 x 844: the taking-turns hint holds while a ball is aimed and moves on after (6 s each)', async () => {
+  it('phone 390 x 844: the taking-turns hint holds while a ball is aimed and moves on after (6 s of game time each)', async () => {
+    // The turns run on game time (main.ts playSeconds), stepped here in the page: the test waited
+    // some 20 s of the wall clock for them before.
     const g = await h.openGame('bouncing-balls', { viewport: { width: 390, height: 844 }, touch: true, query: { count: 8 } });
     const turn = () => g.page.evaluate(() => (window.game as unknown as { hintTurn(): number }).hintTurn());
-    // Just after a change, to time the 6 s from it.
-    const t0 = await turn();
-    await g.waitFor((t) => (window.game as unknown as { hintTurn(): number }).hintTurn() !== t, t0, 10_000);
-    const shown = await turn();
-    const start = Date.now();
+    // Paused (so only the steps below run the game's time), frames drawn: no turn.
     await g.page.evaluate(() => {
       (window.game as unknown as { paused: boolean }).paused = true;
     });
+    await g.frames(2);
+    const t0 = await turn();
+    await g.frames(10);
+    expect(await turn()).toBe(t0);
+    // 6.1 s of game time (steps, then frames that write the row): the next hint.
+    await g.runFrames(366, { draw: false, resume: false });
+    await g.frames(2);
+    const shown = await turn();
+    expect(shown).toBe((t0 + 1) % 4);
     const at = await g.page.evaluate(() => (window.game as unknown as AimGame).positions());
     const from = await g.worldToPage(at[0]!, at[1]!);
     const m = g.page.mouse;
     await m.move(from.x, from.y);
     await m.down();
     await m.move(from.x - 20, from.y + 60, { steps: 4 });
-    // Aimed for 8 s (past 6 s): the hint stays.
-    await new Promise((r) => setTimeout(r, 8000 - (Date.now() - start)));
+    // Aimed for 8 s of game time (past 6 s), a frame drawn each quarter second: the hint stays.
+    for (let i = 0; i < 32; i++) {
+      await g.runFrames(15, { draw: false, resume: false });
+      await g.frames(1);
+    }
     expect(await turn()).toBe(shown);
     await m.up();
-    // Let go: it moves on within 6 s.
-    await g.waitFor((t) => (window.game as unknown as { hintTurn(): number }).hintTurn() !== t, shown, 7000);
+    // Let go: its 6 s are long over, so it moves on at once (on the next frames, no step between).
+    await g.frames(2);
+    expect(await turn()).toBe((shown + 1) % 4);
     expect(g.errors).toEqual([]);
     await g.close();
   });

@@ -338,6 +338,6 @@ describe('submarine mines', () => {
     expect(keel).toBeGreaterThan(1.5); // measured 1.96 m: the mines lie deeper, under the way
     // The warning looks far enough ahead for the helm's speeds: 5 s at full ahead is 65 m.
     expect(MINE_WARN_TIME * Math.sqrt(SUBMARINE.maxThrust / SUBMARINE.dragCoefficient)).toBeGreaterThan(50);
-    expect([HELM.climbSpeed, HELM.diveSpeed]).toEqual([8, 10]);
+    expect([HELM.climbSpeed, HELM.diveSpeed]).toEqual([10, 10]);
   });
 });
