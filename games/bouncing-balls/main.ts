@@ -1898,9 +1898,8 @@ const TALL_AIM_SCALE = 1.5;
  * The aiming arc's least length, s of flight, in the warm-up and once the clock runs alike: most of
  * a basket's flight (a basket from the natural starts of reach.ts reaches the rim 0.8 to 2 s after its
  * throw, 1.7 s the median), for a throw that does not come down to the rim's height sooner
- * (arcSeconds). It ends sooner at its first touch: a ball, a wall, a ramp or the hoop (aimPath). Cut
- * to 0.6 s once the clock ran, a flat throw's arc ended well short of the hoop and a stranger
- * guessed the rest of the round ("the aim line is shortened" said so, and did not help).
+ * (arcSeconds). It ends sooner at its first touch: a ball, a wall, a ramp or the hoop (aimPath). Much
+ * shorter, a flat throw's arc ends well short of the hoop and the player guesses the rest.
  */
 const AIM_SECONDS = 1.2;
 /** The longest flight `aimFlight` and the test hook `aimFrom` follow, s. */
