@@ -391,7 +391,7 @@ const touch = isTouchDevice();
 const withKey = (label: string, key: string): string => (touch ? label : `${label} (${key})`);
 
 /** The folder of the panel's physics knobs: its title says what changing one does. */
-const PHYSICS_FOLDER = 'Advanced (restarts the level)';
+const PHYSICS_FOLDER = 'Advanced (restarts level)';
 /** How a physics knob applies: in PHYSICS_FOLDER, when the slider is let go, by starting the level again. */
 const PHYSICS_KNOB = { folder: PHYSICS_FOLDER, onRelease: true, onChange: () => shell.reset() } as const;
 
@@ -667,6 +667,8 @@ function frameCamera(): void {
   // or at once when a press goes down to aim.
   const read = shell.world.time - lastThrow.decidedAt > (upright() ? Math.max(VERDICT_READ, UPRIGHT_WATCH) : VERDICT_READ);
   if (shotView && lastThrow.verdict && (read || levelEnded)) shotView = false;
+  // Whether this frame is the level's opening look at the castle (read once: the count runs down below).
+  const opens = opening();
   // A level over: the wreck stays in view with its result (on a phone the shot view, not the catapult).
   shot = cameraShot({
     upright: upright(),
@@ -674,7 +676,7 @@ function frameCamera(): void {
     shotView,
     wreck: levelEnded && shots.length > 0,
     zoomsIn: zoomsIn(),
-    opening: opening(),
+    opening: opens,
   });
   if (openingFrames > 0) openingFrames--;
   // The look button while aiming (not while a throw is followed): the castle close, where the aim
@@ -698,7 +700,7 @@ function frameCamera(): void {
     Math.abs(target.maxY - cameraView.maxY),
   );
   // (Not at rest while the opening holds the castle: the pan to the catapult is still to come.)
-  cameraSettled = off < 0.01 && !opening();
+  cameraSettled = off < 0.01 && !opens;
 }
 /** Whether the camera is at rest (not panning or following): the cup stays where it is on screen. */
 let cameraSettled = false;
@@ -1047,7 +1049,9 @@ function drawOffscreen(world: PhysicsWorld): void {
 function drawCastleMarker(): void {
   const cam = renderer.camera;
   const W = cam.width;
-  castleText.visible = cam.toScreenX(lv.castleMinX) > W && !offscreenText.visible && !levelEnded;
+  // (From 0.6 m short of the castle's front: the inset's left edge, drawCloseUp, which would otherwise
+  // show the arrow at its edge as the camera following a throw nears the castle.)
+  castleText.visible = cam.toScreenX(lv.castleMinX - 0.6) > W && !offscreenText.visible && !levelEnded;
   if (!castleText.visible) return;
   const m = 14,
     y = Math.max(cam.toScreenY(lv.castleTop / 2), 90);
