@@ -34,7 +34,21 @@ export interface CameraInput {
   wreck: boolean;
   /** Whether the castle's view is closer than the aim view on this screen (always upright). */
   zoomsIn: boolean;
+  /**
+   * Whether a level's opening look at the castle is under way (`OPENING_FRAMES`: upright where the
+   * aim view is close on the catapult, from a level's first frame until the player touches).
+   */
+  opening: boolean;
 }
+
+/**
+ * Upright where the aim view is close on the catapult (`aimCloseUp`), a new level opens on the
+ * castle's view for this many frames (1.3 s at 60 frames a second), and the camera then pans to the
+ * catapult: the player sees what they shoot at, large, and where it lies from the catapult, before
+ * the castle shrinks to the inset while they aim. (A level opened on the castle alone, held until the
+ * first drag, showed a target with nothing to shoot it from.) A touch ends it at once.
+ */
+export const OPENING_FRAMES = 80;
 
 /**
  * Upright, the castle's view stays this long after a throw's verdict, s, before the camera goes back
@@ -46,15 +60,14 @@ export const UPRIGHT_WATCH = 4.5;
 /**
  * The view the camera heads for: the castle's view for a finished level's wreck (where it is
  * closer), the following view while a throw shows, and otherwise, upright, the castle's view while
- * the player looks at the castle, else the aim view (from the level's start: an opening on the
- * castle alone hid the catapult, and a player saw a target with nothing to shoot it from). Not
+ * the player looks at the castle or a new level opens on it (`OPENING_FRAMES`), else the aim view. Not
  * upright the aim view is the overview (the whole field fits a wide screen).
  */
 export function cameraShot(s: CameraInput): CameraShot {
   if (s.wreck && s.zoomsIn) return 'castle';
   if (s.shotView && s.zoomsIn) return 'follow';
   if (!s.upright) return 'overview';
-  if (s.peeking) return 'castle';
+  if (s.peeking || s.opening) return 'castle';
   return 'aim';
 }
 

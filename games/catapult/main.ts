@@ -31,7 +31,7 @@ import {
 } from '@bitphysics/game-kit';
 import { createReadout } from '@bitphysics/game-kit/lab-kit';
 import { createPauseOverlay, startPixiGame } from '@bitphysics/game-kit/pixi';
-import { contactEvents, createPhysicsWorld, isAlive, type PhysicsWorld, Rng, setGravity, slotOf, step, warmUp } from '@bitphysics/physics';
+import { contactEvents, createPhysicsWorld, isAlive, type PhysicsWorld, Rng, slotOf, step, warmUp } from '@bitphysics/physics';
 import { Container, Graphics, Matrix, RenderTexture, Sprite, Text } from 'pixi.js';
 import { type Box, placeAimLabel } from './aim-label';
 import {
@@ -39,6 +39,7 @@ import {
   type CameraShot,
   cameraShot,
   type Field,
+  OPENING_FRAMES,
   PLAY_SKY,
   PLAY_TOP,
   rockRight as rockRightOf,
@@ -68,6 +69,7 @@ import {
   mixColor,
   SHOT_COLOR,
 } from './look';
+import { fullPullPx as fullPullFor } from './pull';
 import {
   angleForRange,
   buildLevel,
@@ -125,6 +127,8 @@ let lv: Level = {
   rock: 0,
 };
 let shotsLeft = 0;
+/** The stones' mass on the level on screen, kg: the panel's, read when the level starts (a change starts it again). */
+let levelMass = params.projectileMass;
 let shots: number[] = [];
 let best: Tally = { fallen: 0, broken: 0, score: 0 };
 let lastShotTime = 0;
@@ -188,6 +192,7 @@ function createWorld(): PhysicsWorld {
   warmUp(2);
   const world = createPhysicsWorld(worldOptions(params));
   lv = buildLevel(world, { level: params.level - 1, seed: params.seed, gravity: params.gravity, jointStrength: params.jointStrength });
+  levelMass = params.projectileMass;
   shotsLeft = lv.shots;
   shots = [];
   best = { fallen: 0, broken: 0, score: 0 };
@@ -385,6 +390,11 @@ const touch = isTouchDevice();
 /** A panel label with its key (a phone has no keys: the label alone). */
 const withKey = (label: string, key: string): string => (touch ? label : `${label} (${key})`);
 
+/** The folder of the panel's physics knobs: its title says what changing one does. */
+const PHYSICS_FOLDER = 'Advanced (restarts level)';
+/** How a physics knob applies: in PHYSICS_FOLDER, when the slider is let go, by starting the level again. */
+const PHYSICS_KNOB = { folder: PHYSICS_FOLDER, onRelease: true, onChange: () => shell.reset() } as const;
+
 // The panel goes in before the game starts (made after, it would narrow the canvas already drawn and
 // the scene jump). It sits in the left column under the controls, closed, so the scene has the
 // rest of the width (1060 px at 1280 x 800; a right-hand column would leave it 735 px, taller than wide);
@@ -402,28 +412,14 @@ const panel = createPanel(
       onRelease: true,
       onChange: () => shell.reset(),
     },
-    { type: 'slider', key: 'projectileMass', label: 'projectile mass (kg)', min: 0.5, max: 20, step: 0.1 },
-    {
-      type: 'slider',
-      key: 'gravity',
-      label: 'gravity (m/s²)',
-      min: 1,
-      max: 30,
-      step: 0.01,
-      onChange: (g) => setGravity(shell.world, [0, -g]),
-    },
-    {
-      type: 'slider',
-      key: 'jointStrength',
-      label: 'weld strength (N)',
-      min: 50,
-      max: 3000,
-      step: 10,
-      onRelease: true,
-      onChange: () => shell.reset(),
-    },
     { type: 'button', key: 'reset', label: withKey('reset level', 'R') },
     { type: 'button', key: 'next', label: withKey('next level', 'L') },
+    // The physics knobs change the game: in a closed folder saying so, each applied by starting the
+    // level again when the slider is let go (gravity changed in flight turned a throw aimed at the
+    // castle into one that fell short, and the level's score was no longer the level's).
+    { type: 'slider', key: 'gravity', label: 'gravity (m/s²)', min: 1, max: 30, step: 0.01, ...PHYSICS_KNOB },
+    { type: 'slider', key: 'projectileMass', label: 'projectile mass (kg)', min: 0.5, max: 20, step: 0.1, ...PHYSICS_KNOB },
+    { type: 'slider', key: 'jointStrength', label: 'weld strength (N)', min: 50, max: 3000, step: 10, ...PHYSICS_KNOB },
   ],
   { title: 'Settings', container: pageLayout().info, closed: !pageLayout().compact() },
 );
@@ -478,6 +474,13 @@ shell.onWorldChange(() => {
   shotView = false;
   framedFor = '';
   peeking = false;
+  insetHeld = null;
+  // Not at rest until a frame has framed the new level (it may open on its castle).
+  cameraSettled = false;
+  // A level new to the page opens on its castle (upright: ./camera OPENING_FRAMES); the same level
+  // again (a retry) opens on the catapult, the castle already known.
+  openingFrames = params.level !== openedLevel ? OPENING_FRAMES : 0;
+  openedLevel = params.level;
 });
 
 /**
@@ -496,8 +499,8 @@ shell.onWorldChange(() => {
  * the lowest surface UPRIGHT_GROUND of the way up (UPRIGHT_GROUND_CLOSE where the castle's close-up
  * shows in the earth: ./camera uprightGround; the scene in the screen's lower middle, earth
  * under it for the card saying how to play and the next-level button). Which view it heads for is
- * decided in ./camera (cameraShot), and its rectangle there too: from the level's start the aim view
- * is close on the catapult (./camera uprightAimView: a large stone, band and arc) with the castle in
+ * decided in ./camera (cameraShot), and its rectangle there too: a level new to the page opens on
+ * the castle's view (./camera OPENING_FRAMES) and pans to the aim view, close on the catapult (./camera uprightAimView: a large stone, band and arc) with the castle in
  * an inset under the ground and an arrow at the screen's edge saying how far it is (the whole field
  * on a 390 px phone was a thin band, a stone 8 to 12 px, under a tall empty sky); on an upright
  * tablet, where the field is large enough, the aim view holds the catapult and the whole castle and
@@ -664,6 +667,8 @@ function frameCamera(): void {
   // or at once when a press goes down to aim.
   const read = shell.world.time - lastThrow.decidedAt > (upright() ? Math.max(VERDICT_READ, UPRIGHT_WATCH) : VERDICT_READ);
   if (shotView && lastThrow.verdict && (read || levelEnded)) shotView = false;
+  // Whether this frame is the level's opening look at the castle (read once: the count runs down below).
+  const opens = opening();
   // A level over: the wreck stays in view with its result (on a phone the shot view, not the catapult).
   shot = cameraShot({
     upright: upright(),
@@ -671,7 +676,9 @@ function frameCamera(): void {
     shotView,
     wreck: levelEnded && shots.length > 0,
     zoomsIn: zoomsIn(),
+    opening: opens,
   });
+  if (openingFrames > 0) openingFrames--;
   // The look button while aiming (not while a throw is followed): the castle close, where the aim
   // view is the whole field (an upright tablet). (Not where the aim view is close on the catapult
   // and the castle's inset shows in the earth, drawCloseUp: it is the look.)
@@ -692,7 +699,8 @@ function frameCamera(): void {
     Math.abs(target.minY - cameraView.minY),
     Math.abs(target.maxY - cameraView.maxY),
   );
-  cameraSettled = off < 0.01;
+  // (Not at rest while the opening holds the castle: the pan to the catapult is still to come.)
+  cameraSettled = off < 0.01 && !opens;
 }
 /** Whether the camera is at rest (not panning or following): the cup stays where it is on screen. */
 let cameraSettled = false;
@@ -700,6 +708,13 @@ let cameraSettled = false;
 let shot: CameraShot = 'overview';
 /** Whether the player asked to look at the castle (the look button, upright only). */
 let peeking = false;
+/** The level the page last opened (its opening look at the castle shown): a retry does not show it again. */
+let openedLevel = params.level;
+/** Frames left of the level's opening look at the castle (./camera OPENING_FRAMES; 0 once the player touches or throws). */
+let openingFrames = OPENING_FRAMES;
+/** Whether the level's opening look at the castle is under way: upright where the aim view is close on the catapult. */
+const opening = (): boolean =>
+  openingFrames > 0 && upright() && !levelEnded && shots.length === 0 && aimCloseUp(field(), renderer.camera.width, renderer.camera.height);
 /** The look button's words: what a tap shows, said in words (an arrow alone in a corner says nothing). */
 const LOOK_CASTLE = '🔍 Zoom to castle';
 /** The look button's words while the castle shows: back to the catapult. */
@@ -785,28 +800,13 @@ const weldReadout = createReadout(shell.hud.details, ['welds broken']);
 
 // Aiming: press anywhere, drag back, release: the pull is the drag, measured on the screen. A full
 // pull (PULL.max) is a drag of FULL_PULL_SHARE of the canvas's diagonal (kept within
-// [FULL_PULL_MIN_PX, FULL_PULL_MAX_PX]): 380 px at 1280 x 800, about 280 px on an upright phone,
-// so the throws that reach the castle (10 to 14 m/s, half to two thirds of the range) take a hand
+// [FULL_PULL_MIN_PX, FULL_PULL_MAX_PX]): 380 px at 1280 x 800 (an upright phone's: half its width;
+// see ./pull), so the throws that reach the castle (10 to 14 m/s, half to two thirds of the range) take a hand
 // movement long enough to adjust by a few pixels without the landing jumping a metre. It does not
 // depend on the camera's zoom, so the view may ease out while the player pulls.
 const pointer = { x: 0, y: 0 };
-/** A full pull's drag: this share of the canvas's diagonal, within [FULL_PULL_MIN_PX, FULL_PULL_MAX_PX] px. */
-const FULL_PULL_SHARE = 0.32,
-  FULL_PULL_MIN_PX = 240,
-  FULL_PULL_MAX_PX = 380;
-/**
- * On an upright phone a full pull is this share of the screen's width: nearly the width, as long a
- * drag as a thumb can make across it, so a pixel of drag is a small change of power.
- */
-const FULL_PULL_UPRIGHT_SHARE = 0.9;
-/** Screen pixels of drag for a full pull (PULL.max m), from the canvas's size. */
-function fullPullPx(): number {
-  const cam = renderer.camera;
-  const share = upright()
-    ? Math.max(FULL_PULL_SHARE * Math.hypot(cam.width, cam.height), FULL_PULL_UPRIGHT_SHARE * cam.width)
-    : FULL_PULL_SHARE * Math.hypot(cam.width, cam.height);
-  return Math.min(FULL_PULL_MAX_PX, Math.max(FULL_PULL_MIN_PX, share));
-}
+/** Screen pixels of drag for a full pull (PULL.max m), from the canvas's size (./pull). */
+const fullPullPx = (): number => fullPullFor(renderer.camera.width, renderer.camera.height, upright());
 /** Screen pixels per metre of pull. */
 const aimScale = (): number => fullPullPx() / PULL.max;
 app.canvas.addEventListener('pointerdown', (e) => {
@@ -815,6 +815,7 @@ app.canvas.addEventListener('pointerdown', (e) => {
   pointerOnCanvas(app.canvas, e, pointer);
   shotView = false;
   peeking = false;
+  openingFrames = 0;
   lastThrow.hidden = true;
   aim.active = true;
   aim.x0 = pointer.x;
@@ -861,7 +862,7 @@ app.canvas.addEventListener('pointercancel', () => {
 function fire(dx: number, dy: number): number {
   if (levelEnded || shotsLeft <= 0 || Math.hypot(dx, dy) < 0.3) return 0;
   const [vx, vy] = launchVelocity(dx, dy);
-  const ball = launch(shell.world, vx, vy, params.projectileMass);
+  const ball = launch(shell.world, vx, vy, levelMass);
   renderer.setColor(ball, SHOT_COLOR);
   shots.push(ball);
   if (!DEMO) hideHowTo();
@@ -1048,7 +1049,9 @@ function drawOffscreen(world: PhysicsWorld): void {
 function drawCastleMarker(): void {
   const cam = renderer.camera;
   const W = cam.width;
-  castleText.visible = cam.toScreenX(lv.castleMinX) > W && !offscreenText.visible && !levelEnded;
+  // (From 0.6 m short of the castle's front: the inset's left edge, drawCloseUp, which would otherwise
+  // show the arrow at its edge as the camera following a throw nears the castle.)
+  castleText.visible = cam.toScreenX(lv.castleMinX - 0.6) > W && !offscreenText.visible && !levelEnded;
   if (!castleText.visible) return;
   const m = 14,
     y = Math.max(cam.toScreenY(lv.castleTop / 2), 90);
@@ -1760,8 +1763,10 @@ function drawPause(): void {
  * On an upright phone, once a throw stopped short with the castle off the screen (the camera
  * following it stopped before the castle), a close-up of the castle: the same scene CLOSE_MAX times
  * as large or less, as wide as the screen allows, framed and labelled, in the earth under the
- * ground or in the sky. While aiming, where the aim view is close on the catapult and the castle off
- * the screen (./camera aimCloseUp: every level on a phone), the castle's inset: as large as the
+ * ground or in the sky. Where the aim view is close on the catapult (./camera aimCloseUp: every
+ * level on a phone), the castle's inset whenever the castle is not wholly on the screen (from the
+ * opening's pan to the catapult, while aiming, and through a throw's flight at its size and place
+ * from the aim, until the camera has the whole castle on the screen): as large as the
  * earth under the ground holds it (CLOSE_MAX times the scene's scale at most, smaller where a wide
  * castle needs), labelled with its distance, with the arc preview's dots where they cross it; it
  * stands for the look button and stays while a pull's band crosses it (the band is drawn over it).
@@ -1800,6 +1805,8 @@ let closeShown: { box: [number, number, number, number]; zoom: number; src: [num
 let closeDraws = 0;
 /** Whether the close-up shows in the earth while the player aims (drawAim then keeps the aim's numbers out of the earth). */
 let closeWhileAiming = false;
+/** The castle's inset's width and top while the player last aimed, px: kept while a throw is followed (drawCloseUp). */
+let insetHeld: { bw: number; by: number } | null = null;
 /** Whether the close-up sits in the earth under the ground (out of a pull's way), not in the sky. */
 let closeLow = false;
 /**
@@ -1857,10 +1864,14 @@ function drawCloseUp(): void {
   const cam = renderer.camera;
   // In the shot view too once a throw that stopped short has settled with the castle off the screen.
   const castleOff = cam.toScreenX(lv.castleMaxX) > cam.width && lastThrow.verdict !== '';
-  // While aiming close on the catapult (the castle off the screen), once the camera is at rest.
-  const aiming =
-    upright() && !levelEnded && !shotView && !peeking && shot === 'aim' && cameraSettled && aimCloseUp(field(), cam.width, cam.height);
-  const show = upright() && !levelEnded && ((shotView && castleOff) || aiming);
+  // Where the aim view is close on the catapult (every level on a phone), whenever the castle is not
+  // wholly on the screen: while inset, while the camera pans between the castle and the catapult,
+  // and while a throw is followed to it (hidden from the throw until the castle came into view, the
+  // player lost sight of the target for the flight's first seconds).
+  const close = upright() && !levelEnded && aimCloseUp(field(), cam.width, cam.height);
+  const castleAway = cam.toScreenX(lv.castleMinX) < 0 || cam.toScreenX(lv.castleMaxX) > cam.width;
+  const inset = close && !peeking && shot !== 'castle' && castleAway;
+  const show = upright() && !levelEnded && ((shotView && castleOff) || inset);
   closeShown = null;
   if (show) {
     // The castle with room round it for what falls, from the ground (or a pit's floor) up.
@@ -1868,7 +1879,7 @@ function drawCloseUp(): void {
     const x0 = lv.castleMinX - 0.6,
       x1 = lv.castleMaxX + 0.6,
       y0 = floor - 0.3,
-      y1 = lv.castleTop + (aiming && previewLimit(params.level - 1, lv, params.guide === 'full') === Infinity ? CLOSE_SKY_AIMING : 0.8);
+      y1 = lv.castleTop + (inset && previewLimit(params.level - 1, lv, params.guide === 'full') === Infinity ? CLOSE_SKY_AIMING : 0.8);
     const sx = cam.toScreenX(x0),
       sy = cam.toScreenY(y1),
       w = cam.toScreenLength(x1 - x0),
@@ -1894,7 +1905,7 @@ function drawCloseUp(): void {
     // The place where it is the larger (the sky's when they are alike: a wide, low castle's close-up
     // there fills the sky over the field), unless a pull crosses it and not the other.
     const skyFirst = zoomIn(sky) >= 0.98 * zoomIn(earth);
-    const slot = aiming
+    const slot = inset
       ? earth
       : crosses(skyFirst ? sky : earth) && !crosses(skyFirst ? earth : sky)
         ? skyFirst
@@ -1905,10 +1916,13 @@ function drawCloseUp(): void {
           : earth;
     closeLow = slot === earth;
     const [top, bottom] = slot;
-    const zoom = zoomIn(slot);
+    // While a throw is followed the inset keeps its size and place from the aim (the follow view rises
+    // with a high stone, which would shrink the earth's band and the inset with it, frame by frame).
+    const held = inset && shotView ? insetHeld : null;
+    const zoom = held ? held.bw / w : zoomIn(slot);
     // Shown when it magnifies enough, or whenever the castle is off the screen (upright, the aim view
     // frames the catapult: the close-up is where the castle shows).
-    if (aiming ? zoom > 0 : zoom >= CLOSE_MIN || (zoom > 0.5 && sx + w > cam.width)) {
+    if (inset ? zoom > 0 : zoom >= CLOSE_MIN || (zoom > 0.5 && sx + w > cam.width)) {
       const bw = Math.round(w * zoom),
         bh = Math.round(h * zoom);
       closeAge++;
@@ -1947,15 +1961,16 @@ function drawCloseUp(): void {
       // with a screen of empty sky between it and the castle), high in the earth's (it stays put when the
       // card under it goes).
       const bx = Math.round((cam.width - bw) / 2),
-        by = Math.round(closeLow ? top : Math.max(top, bottom - bh));
+        by = held ? held.by : Math.round(closeLow ? top : Math.max(top, bottom - bh));
+      if (inset && !shotView) insetHeld = { bw, by };
       closeSprite.position.set(bx, by);
       closeFrame
         .clear()
         .roundRect(bx - 1, by - 1, bw + 2, bh + 2, 6)
         .stroke({ width: 2, color: 0xffffff, alpha: 0.9 });
       closeLabel.position.set(bx + 6, by + 4);
-      // While aiming the castle is off the screen: the inset says how far it is (as the arrow at the edge).
-      const words = aiming ? `castle ${Math.round(lv.castleMinX - LAUNCH.x)} m ahead ▸` : 'castle, close up';
+      // While inset the castle is off the screen: the inset says how far it is (as the arrow at the edge).
+      const words = inset ? `castle ${Math.round(lv.castleMinX - LAUNCH.x)} m ahead ▸` : 'castle, close up';
       if (closeLabel.text !== words) closeLabel.text = words;
       closeShown = { box: [bx, by, bw, bh], zoom, src: [sx, sy] };
     }
@@ -1965,7 +1980,7 @@ function drawCloseUp(): void {
     closeSeen.length = 0;
   }
   closeSprite.visible = closeFrame.visible = closeLabel.visible = closeShown !== null;
-  closeWhileAiming = aiming && closeShown !== null;
+  closeWhileAiming = inset && closeShown !== null;
 }
 
 /**

@@ -19,6 +19,7 @@ import {
   FIELD_GROUND,
   type Field,
   FOLLOW_PX_PER_M,
+  OPENING_FRAMES,
   PLAY_SKY,
   rockRight,
   UPRIGHT_GROUND,
@@ -34,7 +35,7 @@ import {
 import { buildLevel, LAUNCH, LEVEL_COUNT, PROJECTILE_RADIUS, previewLimit, ROCK, worldOptions } from '../../games/catapult/scene';
 
 /** A phone held upright, nothing thrown. */
-const aiming: CameraInput = { upright: true, peeking: false, shotView: false, wreck: false, zoomsIn: true };
+const aiming: CameraInput = { upright: true, peeking: false, shotView: false, wreck: false, zoomsIn: true, opening: false };
 
 /** Level `level`'s (0-based) field as the page frames it: the castle's extent and top, and the lowest ground. */
 function levelField(level: number): Field {
@@ -48,9 +49,16 @@ function levelField(level: number): Field {
 }
 
 describe('catapult camera', () => {
-  it('upright: the aim view (the catapult and the whole castle) from the level start', () => {
-    // An opening on the castle alone hid the catapult: a stranger saw a target and nothing to shoot from.
+  it('upright: a new level opens on the castle, then the aim view (the catapult close) until a throw', () => {
+    // A stranger on a phone saw the castle only in a small inset: the level shows it large first, for
+    // OPENING_FRAMES (over a second at 60 frames a second, under two), and the camera then pans to the catapult.
+    expect(cameraShot({ ...aiming, opening: true })).toBe('castle');
+    expect(OPENING_FRAMES).toBeGreaterThanOrEqual(60);
+    expect(OPENING_FRAMES).toBeLessThanOrEqual(120);
     expect(cameraShot(aiming)).toBe('aim');
+    // A throw during the opening is followed; a wide screen shows the whole field from the start.
+    expect(cameraShot({ ...aiming, opening: true, shotView: true })).toBe('follow');
+    expect(cameraShot({ ...aiming, opening: true, upright: false })).toBe('overview');
   });
 
   it('upright: the look button shows the castle close while aiming; a throw is followed; a finished level shows the wreck', () => {

@@ -4,8 +4,18 @@ import { pageLayout } from './layout.js';
 /** Keys of `P` whose values are numbers. */
 type NumberKey<P> = { [K in keyof P]: P[K] extends number ? K : never }[keyof P] & string;
 
+/** What every control may say besides its kind and parameter. */
+export interface ControlPlace {
+  /**
+   * The folder the control goes in: controls naming the same folder share one, closed at start and
+   * placed where its first control is listed (knobs a player need not see, such as physics
+   * constants). Default none: the panel itself.
+   */
+  folder?: string;
+}
+
 /** A slider for a number parameter. */
-export interface SliderControl<P> {
+export interface SliderControl<P> extends ControlPlace {
   /** Kind of control. */
   type: 'slider';
   /** The parameter (a number field of the params object). */
@@ -25,7 +35,7 @@ export interface SliderControl<P> {
 }
 
 /** A dropdown choosing one of `options` for a parameter. */
-export interface ChoiceControl<P> {
+export interface ChoiceControl<P> extends ControlPlace {
   /** Kind of control. */
   type: 'choice';
   /** The parameter. */
@@ -39,7 +49,7 @@ export interface ChoiceControl<P> {
 }
 
 /** A checkbox (boolean parameter), a button (function parameter) or a text field (string parameter). */
-export interface PlainControl<P> {
+export interface PlainControl<P> extends ControlPlace {
   /** Kind of control: 'checkbox' (boolean field), 'button' (function field), 'text' (string field). */
   type: 'checkbox' | 'button' | 'text';
   /** The parameter. */
@@ -81,7 +91,8 @@ export interface Panel<P> {
 
 /**
  * Builds a lil-gui panel over `params`, one control per entry, in order: sliders, dropdowns,
- * checkboxes, buttons and text fields, chosen by each entry's `type`.
+ * checkboxes, buttons and text fields, chosen by each entry's `type`; an entry with a `folder` goes in
+ * that folder (closed at start, where its first entry is).
  * @throws TypeError if `params` is not an object, a key is not a field of params, a type is unknown
  *   or does not match the field (slider: number, checkbox: boolean, button: function, text: string);
  *   RangeError if a slider's min >= max or step <= 0.
@@ -101,8 +112,14 @@ export function createPanel<P extends object>(params: P, controls: readonly Pane
   });
   if (side) side.prepend(gui.domElement);
   const byKey = new Map<string, Controller>();
+  const folders = new Map<string, GUI>();
   try {
     for (const control of controls) {
+      let into = gui;
+      if (control.folder !== undefined) {
+        into = folders.get(control.folder) ?? gui.addFolder(control.folder).close();
+        folders.set(control.folder, into);
+      }
       const key = control.key;
       if (!(key in record)) throw new TypeError(`${where}: key ${JSON.stringify(key)} is not a field of params`);
       let ctl: Controller;
@@ -121,7 +138,7 @@ export function createPanel<P extends object>(params: P, controls: readonly Pane
         if (control.step !== undefined && !(control.step > 0)) {
           throw new RangeError(`${where}: slider ${JSON.stringify(key)} needs step > 0, got ${control.step}`);
         }
-        ctl = gui.add(params, key as keyof P, control.min, control.max, control.step);
+        ctl = into.add(params, key as keyof P, control.min, control.max, control.step);
         const cb = control.onChange;
         if (cb) {
           const handler = (v: number) => cb(v, params);
@@ -129,11 +146,11 @@ export function createPanel<P extends object>(params: P, controls: readonly Pane
           else ctl.onChange(handler);
         }
       } else if (control.type === 'choice') {
-        ctl = gui.add(params, key as keyof P, control.options as object);
+        ctl = into.add(params, key as keyof P, control.options as object);
         const cb = control.onChange;
         if (cb) ctl.onChange((v: unknown) => cb(v, params));
       } else {
-        ctl = gui.add(params, key as keyof P);
+        ctl = into.add(params, key as keyof P);
         const cb = control.onChange;
         if (cb) ctl.onChange((v: unknown) => cb(v, params));
       }
