@@ -32,6 +32,7 @@ import {
   PadChallenge,
   padLayout,
   padPuzzle,
+  ROLL_ONLY_BED,
   ROLL_SPIN_MAX,
   ROLL_TORQUE,
   rotatingCubeWorldOptions,
@@ -281,8 +282,12 @@ describe('rotating-cube roll puzzle: the rounds', () => {
       expect(layout.beds).toEqual(PAD_BEDS);
       for (let k = 0; k < PAD_COUNT; k++) {
         const p = padPuzzle(layout, k);
+        // The pad rolled to across the whole floor is rolled to from the pad before (no slide stops on its floor).
+        const prev = layout.pads[k - 1];
+        const from: [number, number] | null =
+          p.bed === ROLL_ONLY_BED && prev ? [Math.round(prev[0] - p.pad[0]), Math.round(prev[1] - p.pad[1])] : null;
         for (const o of allOrientations()) {
-          const par = movePar(p, null, o);
+          const par = movePar(p, from, o);
           expect(par, `seed ${seed} pad ${k}`).toBeGreaterThanOrEqual(1);
           expect(par).toBeLessThanOrEqual(8);
           if (p.bed >= 1) {
@@ -293,6 +298,41 @@ describe('rotating-cube roll puzzle: the rounds', () => {
       }
     }
     expect(planned / tiled).toBeGreaterThan(0.5);
+  });
+
+  it("the last pad of a round is rolled to across the whole floor: no slide stops anywhere, and its par from the pad before is the round's highest, 4 or more", () => {
+    // A shortest play of the round from the drop (the centre, LANDING_FACE up, the identity): each pad's par from where the one before left the cube.
+    const pars: number[][] = [];
+    for (let seed = 0; seed < 60; seed++) {
+      const layout = padLayout(seed);
+      const last = padPuzzle(layout, PAD_COUNT - 1);
+      expect(last.bed).toBe(ROLL_ONLY_BED);
+      // No cell of the room is outside its tiles: every slide is refused, and bedSnap has nowhere to stop one.
+      expect(edgeCells(last)).toEqual([]);
+      // On the grid of the pad before (a whole number of cells away), so rolls from there line up with it.
+      const prev = layout.pads[PAD_COUNT - 2]!;
+      for (const v of [0, 1]) expect(Math.abs(last.pad[v]! - prev[v]! - Math.round(last.pad[v]! - prev[v]!))).toBeLessThan(1e-9);
+      let at: readonly [number, number] = [0, 0],
+        o: GridOrientation = GRID_IDENTITY;
+      const row: number[] = [];
+      for (let k = 0; k < PAD_COUNT; k++) {
+        const p = padPuzzle(layout, k);
+        const route = moveRoute(p, [Math.round(at[0] - p.pad[0]), Math.round(at[1] - p.pad[1])], o)!;
+        expect(route, `seed ${seed} pad ${k}`).not.toBeNull();
+        if (k === PAD_COUNT - 1) expect(route.every((m) => m.kind !== 'slide')).toBe(true);
+        for (const m of route)
+          if (m.kind === 'roll') o = rollOrientation(o, m.direction);
+          else if (m.kind === 'turn') o = turnOrientation(o, m.direction);
+        row.push(route.length);
+        at = p.pad;
+      }
+      pars.push(row);
+    }
+    const mean = (k: number): number => pars.reduce((s, r) => s + r[k]!, 0) / pars.length;
+    // Measured over 200 seeds: pad 5's par 4.61 (4 to 5) with a bed of one cell, 5.44 (4 to 6) rolled all the way.
+    for (const row of pars) expect(row[PAD_COUNT - 1]).toBeGreaterThanOrEqual(4);
+    expect(mean(PAD_COUNT - 1)).toBeGreaterThan(5);
+    for (let k = 1; k < PAD_COUNT; k++) expect(mean(k)).toBeGreaterThan(mean(k - 1));
   });
 
   it("a route the search finds, played in the physics world (slides and turns set by hand, rolls by the game's torque), lands the cube on the pad in exactly par moves", () => {
@@ -310,12 +350,15 @@ describe('rotating-cube roll puzzle: the rounds', () => {
         const O = world.components.Orientation,
           P = world.components.Position;
         const o0 = allOrientations()[(seed * 7 + k) % 24]!;
-        // Away from the pad: the room's far corner from it (at least 2.45 m off on each axis: beyond the edge row, or half a cell off it).
-        const away = layout.pads[k]!.map((v) => (v > 0 ? -CELL_REACH : CELL_REACH)) as [number, number];
+        // Away from the pad: the room's far corner from it (at least 2.45 m off on each axis: beyond the
+        // edge row, or half a cell off it); for the pad rolled to across the whole floor, the pad before.
+        const last = layout.beds[k] === ROLL_ONLY_BED;
+        const [px0, pz0] = layout.pads[k]!;
+        const away = (last ? [...layout.pads[k - 1]!] : layout.pads[k]!.map((v) => (v > 0 ? -CELL_REACH : CELL_REACH))) as [number, number];
         setDown(world, body, away[0], away[1], o0);
         const movesAt = pads.moves;
         const par = pads.pars[k]!;
-        const route = moveRoute(padPuzzle(layout, k), null, o0)!;
+        const route = moveRoute(padPuzzle(layout, k), last ? [Math.round(away[0] - px0), Math.round(away[1] - pz0)] : null, o0)!;
         expect(route.length).toBe(par);
         const here = (): GridOrientation => gridOrientationOf(O.x[body]!, O.y[body]!, O.z[body]!, O.w[body]!);
         for (const move of route as RollMove[]) {
