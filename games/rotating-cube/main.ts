@@ -130,6 +130,7 @@ import {
   ROOM_HALF,
   ROOM_PUSH,
   type RotatingCubeHandles,
+  rollSettle,
   rotatingCubeWorldOptions,
   slideSpeed,
   topFace,
@@ -253,6 +254,11 @@ function torqueNow(world: PhysicsWorld): Float64Array {
 const ROLL_LATCH_ANGLE = (55 * Math.PI) / 180,
   ROLL_LATCH_TIME = 1.5;
 /** The latched roll: its axis (a level unit vector), the orientation at the press and the world time it ends; on while `latchUntil` > now. */
+/**
+ * Room mode: whether a roll key's roll has begun since the last push or jump: once the roll is over
+ * (no roll key held, the latch done) the cube's landing settles quickly (scene.ts `rollSettle`).
+ */
+let settleArmed = false;
 const latchAxis = new Float64Array(3),
   latchQ = new Float64Array(4);
 let latchUntil = -1;
@@ -324,6 +330,13 @@ function createWorld(): PhysicsWorld {
     'forces',
     torqueCouple(handles.body, () => torqueNow(world)),
   );
+  settleArmed = false;
+  if (params.mode === 'room')
+    addSystem(
+      world,
+      'forces',
+      rollSettle(handles.body, () => settleArmed && rollAxis[0] === 0 && rollAxis[2] === 0),
+    );
   // The challenges are checked after every step (a system at the end of the step), so they count
   // the same whether the page runs, single-steps or is stepped by a test.
   if (freshLayout) layout = padLayout(fixedSeed ?? Math.floor(Math.random() * 2 ** 31));
@@ -493,6 +506,7 @@ function jump(): void {
   if (params.mode !== 'room') return;
   pads.start(shell.world.time);
   pads.jumped();
+  settleArmed = false;
   applyImpulse(shell.world, handles.body, [0, JUMP_IMPULSE, 0]);
 }
 
@@ -1289,6 +1303,7 @@ function latchRoll(fresh: boolean, rolling: boolean): void {
     latchQ[2] = q.z[e]!;
     latchQ[3] = q.w[e]!;
     latchUntil = t + ROLL_LATCH_TIME;
+    settleArmed = true;
   }
   if (rolling || t >= latchUntil) return;
   const dot = Math.abs(latchQ[0]! * q.x[e]! + latchQ[1]! * q.y[e]! + latchQ[2]! * q.z[e]! + latchQ[3]! * q.w[e]!);
@@ -1652,6 +1667,7 @@ function pushCube(p: Push): void {
   const c = shell.world.components,
     m = c.Mass.value[e]!;
   pads.start(shell.world.time);
+  settleArmed = false;
   // A slide keeps the top face: the next pad that wants a face must be rolled onto after it.
   pads.slid();
   // A slide aimed at the lit pad with the face it wants on top: say at once that only a roll takes it.

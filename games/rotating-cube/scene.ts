@@ -247,6 +247,44 @@ export const FLIP_DRAG = 0.1;
  */
 export const FLIP_PUSH = 2;
 
+/**
+ * Room mode: how fast a rolled cube's leftover motion dies once it lies flat on its new face, 1/s:
+ * at 12/s a landing's 0.3 m/s of slide and its rock back and forth fade within about 0.2 s, so a
+ * roll ends square on its cell instead of skidding and rocking on for another half second.
+ */
+export const ROLL_SETTLE_RATE = 12;
+
+/**
+ * A forces-stage system for the room: while `on()` (the game: a roll key's roll has ended and the
+ * cube has not been pushed since) and the cube lies flat on a face (its centre under 0.53 m, a body
+ * axis within 8 degrees of vertical), its level velocity and its spin about level axes decay at
+ * ROLL_SETTLE_RATE (scaled by exp(-rate dt) each step); its spin about the vertical (the yaw
+ * keeper's) and its fall are left alone. Off the floor, on an edge or mid-roll it does nothing.
+ */
+export function rollSettle(body: number, on: () => boolean): System {
+  const flat = Math.cos((8 * Math.PI) / 180);
+  return (world) => {
+    if (!on()) return;
+    const P = world.components.Position,
+      V = world.components.Velocity,
+      W = world.components.AngularVelocity,
+      q = world.components.Orientation;
+    if (P.y[body]! > 0.53) return;
+    const x = q.x[body]!,
+      y = q.y[body]!,
+      z = q.z[body]!,
+      w = q.w[body]!;
+    // The world y components of the body's axes: row y of its rotation matrix.
+    const up = Math.max(Math.abs(2 * (x * y + w * z)), Math.abs(1 - 2 * (x * x + z * z)), Math.abs(2 * (y * z - w * x)));
+    if (up < flat) return;
+    const k = Math.exp(-ROLL_SETTLE_RATE * world.dt);
+    V.x[body] = V.x[body]! * k;
+    V.z[body] = V.z[body]! * k;
+    W.x[body] = W.x[body]! * k;
+    W.z[body] = W.z[body]! * k;
+  };
+}
+
 /** A forces-stage system: the torque -drag L on `body` (flip mode's pivot drag, `FLIP_DRAG`) in the steps where `on` returns true. */
 function flipDrag(world: PhysicsWorld, body: number, drag: number, on: () => boolean): System {
   const L = new Float64Array(3);
@@ -529,7 +567,7 @@ export function padLayout(seed: number): PadLayout {
       }
     }
   };
-  for (let k = 0; k < PAD_COUNT - 1; k++) place();
+  for (let k = 0; k < PAD_COUNT; k++) place();
   const faces = [-1];
   // Beside a face: the four faces on the other two axes.
   const beside = (f: number): number => {
@@ -539,6 +577,9 @@ export function padLayout(seed: number): PadLayout {
   faces.push(beside(LANDING_FACE));
   faces.push(faces[1]! ^ 1);
   faces.push(beside(faces[2]!));
+  // The last pad laid at random goes (it is drawn so that a seed's other pads and faces stay as they were);
+  // the roll-only one takes its place.
+  pads.pop();
   // The pad before the last one moves until the last has a spot (rare: it sat where no spot 3 to 5 cells off is clear).
   let lastPad = rollOnlyPad(pads, faces, random);
   for (let tries = 0; !lastPad && tries < 100; tries++) {
