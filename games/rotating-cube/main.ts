@@ -796,7 +796,7 @@ const bedTiles = Array.from({ length: 36 }, () => {
   app.scene.add(tile);
   return tile;
 });
-/** Lays the bed's tiles around pad `k` (none for a pad without a bed, or once the round is over). */
+/** Lays the bed's tiles around pad `k` (none for a pad without a bed, or once the round is over) and words the legend for them. */
 function placeBed(k: number): void {
   let n = 0;
   const bed = layout.beds[k] ?? -1,
@@ -812,6 +812,12 @@ function placeBed(k: number): void {
   bedTiles.forEach((tile, i) => {
     tile.visible = i < n;
   });
+  // The legend's words follow the tiles drawn (set only when they change: this runs every frame).
+  const words =
+    n > 0 && rollOnly()
+      ? 'ROLL tiles: a slide stops at their edge; this pad has them over the whole floor: no slides, plan your rolls'
+      : 'ROLL tiles: a slide stops at their edge, roll across them';
+  if (bedWords.textContent !== words) bedWords.textContent = words;
 }
 const burst = new Mesh(
   new RingGeometry(0.85, 1, 48).rotateX(-Math.PI / 2),
@@ -2236,9 +2242,6 @@ function showRules(): void {
 function markChips(): void {
   rules.style.display = params.mode === 'room' && !pads.done ? 'block' : 'none';
   bedLegend.style.display = (layout.beds[pads.pad] ?? -1) > 0 ? 'flex' : 'none';
-  bedWords.textContent = rollOnly()
-    ? 'ROLL tiles: a slide stops at their edge; this pad has them over the whole floor: no slides, plan your rolls'
-    : 'ROLL tiles: a slide stops at their edge, roll across them';
   [...rulesChips.children].forEach((chip, i) => {
     const el = chip as HTMLElement;
     el.style.opacity = i < pads.pad ? '0.45' : '1';
