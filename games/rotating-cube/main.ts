@@ -27,9 +27,12 @@
  * Click: room: the floor, a push there; the cube, a flick away from the point; pivot: an impulse at the
  * point of the face clicked along the ray. Drag: orbit.
  * Challenges: room: rest the cube on five pads in turn, the last four rolled onto with a given face up,
- * the last three across a bed of tiles a slide stops at (stars by moves against par: roll-puzzle.ts);
- * cube on the pivot: steer ω onto three target spins and hold each (spin-challenge.ts); flip: 10 flips
- * in 20 s, counted only while the spin is within FLIP_BAND.
+ * the third and fourth across a bed of tiles a slide stops at, the last across a floor of them (no
+ * slide stops anywhere: a route of rolls planned from the pad before; stars by moves against par:
+ * roll-puzzle.ts); cube on the pivot: steer ω onto three target spins and hold each (spin-challenge.ts),
+ * with guides (spin-look.ts): a ghost cube turning at the target spin, the gap from ω's tip to the
+ * target's, the torque at ω's tip coloured by how it meets the gap, a ring filling over the hold and a
+ * closeness meter in the status row; flip: 10 flips in 20 s, counted only while the spin is within FLIP_BAND.
  * A new round (page load, or Next at its end) lays the pads out afresh from a seed (scene.ts `padLayout`);
  * R (and Retry) plays the same pads again. The face net at the top left of the stage shows which colour
  * each roll key brings on top, the pads card at the top right each pad's colour to land with on top
@@ -91,7 +94,7 @@ import {
   Vector3,
 } from 'three';
 import { cubeControls, TAP_SLOP, touchPress } from './controls';
-import { bedSnap } from './roll-puzzle';
+import { bedSnap, edgeCells } from './roll-puzzle';
 import { buildRoomLook } from './room-look';
 import { type RoundEndContent, roundEnd, starText } from './round-end';
 import { padResultText, roundMovesText } from './round-moves';
@@ -127,6 +130,7 @@ import {
   ROOM_HALF,
   ROOM_PUSH,
   type RotatingCubeHandles,
+  rollSettle,
   rotatingCubeWorldOptions,
   slideSpeed,
   topFace,
@@ -135,7 +139,18 @@ import {
   WALL_HEIGHT,
   YawKeeper,
 } from './scene';
-import { SPIN_HOLD, SPIN_RATE, SPIN_STAR_TIMES, SPIN_TARGETS, SPIN_TOLERANCE, SpinChallenge, spinTargets } from './spin-challenge';
+import {
+  closenessBar,
+  SPIN_HOLD,
+  SPIN_RATE,
+  SPIN_STAR_TIMES,
+  SPIN_TARGETS,
+  SPIN_TOLERANCE,
+  SpinChallenge,
+  spinCloseness,
+  spinTargets,
+} from './spin-challenge';
+import { SpinLook } from './spin-look';
 import { ToGoMeter } from './to-go';
 
 /** A mouse press that moves more than this, CSS px, is a camera drag, not a click (a finger: controls.ts TAP_SLOP). */
@@ -239,6 +254,11 @@ function torqueNow(world: PhysicsWorld): Float64Array {
 const ROLL_LATCH_ANGLE = (55 * Math.PI) / 180,
   ROLL_LATCH_TIME = 1.5;
 /** The latched roll: its axis (a level unit vector), the orientation at the press and the world time it ends; on while `latchUntil` > now. */
+/**
+ * Room mode: whether a roll key's roll has begun since the last push or jump: once the roll is over
+ * (no roll key held, the latch done) the cube's landing settles quickly (scene.ts `rollSettle`).
+ */
+let settleArmed = false;
 const latchAxis = new Float64Array(3),
   latchQ = new Float64Array(4);
 let latchUntil = -1;
@@ -310,6 +330,13 @@ function createWorld(): PhysicsWorld {
     'forces',
     torqueCouple(handles.body, () => torqueNow(world)),
   );
+  settleArmed = false;
+  if (params.mode === 'room')
+    addSystem(
+      world,
+      'forces',
+      rollSettle(handles.body, () => settleArmed && rollAxis[0] === 0 && rollAxis[2] === 0),
+    );
   // The challenges are checked after every step (a system at the end of the step), so they count
   // the same whether the page runs, single-steps or is stepped by a test.
   if (freshLayout) layout = padLayout(fixedSeed ?? Math.floor(Math.random() * 2 ** 31));
@@ -479,6 +506,7 @@ function jump(): void {
   if (params.mode !== 'room') return;
   pads.start(shell.world.time);
   pads.jumped();
+  settleArmed = false;
   applyImpulse(shell.world, handles.body, [0, JUMP_IMPULSE, 0]);
 }
 
@@ -762,13 +790,13 @@ function rollTileTexture(): CanvasTexture {
  */
 const bedMaterial = new MeshBasicMaterial({ color: 0xc4d2ee, map: rollTileTexture(), transparent: true, opacity: 0.75, depthWrite: false });
 const bedPlane = new PlaneGeometry(0.92, 0.92).rotateX(-Math.PI / 2);
-const bedTiles = Array.from({ length: 8 }, () => {
+const bedTiles = Array.from({ length: 36 }, () => {
   const tile = new Mesh(bedPlane, bedMaterial);
   tile.visible = false;
   app.scene.add(tile);
   return tile;
 });
-/** Lays the bed's tiles around pad `k` (none for a pad without a bed, or once the round is over). */
+/** Lays the bed's tiles around pad `k` (none for a pad without a bed, or once the round is over) and words the legend for them. */
 function placeBed(k: number): void {
   let n = 0;
   const bed = layout.beds[k] ?? -1,
@@ -784,6 +812,12 @@ function placeBed(k: number): void {
   bedTiles.forEach((tile, i) => {
     tile.visible = i < n;
   });
+  // The legend's words follow the tiles drawn (set only when they change: this runs every frame).
+  const words =
+    n > 0 && rollOnly()
+      ? 'ROLL tiles: a slide stops at their edge; this pad has them over the whole floor: no slides, plan your rolls'
+      : 'ROLL tiles: a slide stops at their edge, roll across them';
+  if (bedWords.textContent !== words) bedWords.textContent = words;
 }
 const burst = new Mesh(
   new RingGeometry(0.85, 1, 48).rotateX(-Math.PI / 2),
@@ -971,14 +1005,42 @@ const targetBall = new Mesh(
   new MeshBasicMaterial({ color: 0x22d3ee, transparent: true, opacity: 0.22, depthWrite: false }),
 );
 app.scene.add(targetArrow.object, targetBall);
-/** Draws the lit free-spin target (hidden in the other modes and once the round is won); the ball brightens while ω's tip is in it. */
+/**
+ * The free-spin guides (spin-look.ts): a ghost cube turning at the target spin beside the pivot (on a
+ * phone's narrow stage above it), the gap from ω's tip to the target's, the torque at ω's tip and the
+ * hold ring round the ball.
+ */
+const spinLook = new SpinLook(app.scene, faceColors, pageLayout().touch() ? [0.75, 1.2] : [1.55, 0.75]);
+/** World time of the last `drawSpinTarget`, s (the ghost turns by the world time between two frames, so it stops with a pause). */
+let spinLookTime = -1;
+/** Whether ω's tip was in the lit target's ball at the last frame (entering it rings a chime). */
+let wasInBall = false;
+/**
+ * Draws the lit free-spin target and its guides (`spinLook`; hidden in the other modes and once the
+ * round is won); the ball brightens while ω's tip is in it, and a chime rings as the tip enters it.
+ */
 function drawSpinTarget(): void {
   const aim = spins.targets[spins.target];
+  const t = shell.world.time,
+    dt = spinLookTime >= 0 ? Math.max(0, t - spinLookTime) : 0;
+  spinLookTime = t;
   if (params.mode !== 'cube' || spins.won || !aim) {
     targetArrow.hide();
     targetBall.visible = false;
+    spinLook.hide();
+    wasInBall = false;
     return;
   }
+  const W = shell.world.components.AngularVelocity,
+    e = handles.body;
+  omegaNow[0] = W.x[e]!;
+  omegaNow[1] = W.y[e]!;
+  omegaNow[2] = W.z[e]!;
+  app.camera.updateMatrixWorld();
+  spinLook.update({ pivot: handles.pivot, omega: omegaNow, aim, torque: keyTorque, held: spins.held, scale: omegaScale, dt }, app.camera);
+  const inBall = spins.held > 0;
+  if (inBall && !wasInBall) sound.chime(880, 0.08);
+  wasInBall = inBall;
   const o = handles.pivot;
   targetArrow.set(o[0], o[1], o[2], aim[0], aim[1], aim[2], omegaScale);
   targetBall.visible = true;
@@ -986,6 +1048,9 @@ function drawSpinTarget(): void {
   targetBall.scale.setScalar(SPIN_TOLERANCE * omegaScale);
   (targetBall.material as MeshBasicMaterial).opacity = spins.held > 0 ? 0.5 : 0.22;
 }
+
+/** ω now, rad/s, world frame (for the spin guides). */
+const omegaNow = new Float64Array(3);
 
 const lArrow = new VectorArrow({ color: 0xffd166, radius: 0.025, headLength: 0.14 });
 const wArrow = new VectorArrow({ color: 0xff5ce1, radius: 0.035, headLength: 0.16 });
@@ -1244,6 +1309,7 @@ function latchRoll(fresh: boolean, rolling: boolean): void {
     latchQ[2] = q.z[e]!;
     latchQ[3] = q.w[e]!;
     latchUntil = t + ROLL_LATCH_TIME;
+    settleArmed = true;
   }
   if (rolling || t >= latchUntil) return;
   const dot = Math.abs(latchQ[0]! * q.x[e]! + latchQ[1]! * q.y[e]! + latchQ[2]! * q.z[e]! + latchQ[3]! * q.w[e]!);
@@ -1486,7 +1552,7 @@ function aimAt(ndcX: number, ndcY: number): Push | null {
   // and the pop says to roll onto it (a slide to the bed's nearest edge cell went wherever that was,
   // often away from the cell clicked).
   const [x, z] = snapToBed(hx, hz);
-  if (x !== hx || z !== hz) {
+  if (x !== hx || z !== hz || rollOnly()) {
     aimWhy = 'bed';
     return null;
   }
@@ -1508,6 +1574,7 @@ function sayWhyNot(): void {
   refuseMark.position.set(hoverCell[0], 0.04, hoverCell[1]);
   sound.chime(220, 0.12);
   if (aimWhy === 'here') showPop(`✗ The cube is on that cell: pick another, or roll it (${roll})`, 1600, '#ffb4a8');
+  else if (rollOnly()) showPop(`✗ No slides to this pad: plan a route and roll all the way (${roll})`, 2200, '#ffb4a8');
   else showPop(`✗ Can't slide there: roll onto it (${roll})`, 1800, '#ffb4a8');
 }
 
@@ -1523,6 +1590,11 @@ function flickAim(hx: number, hz: number): Push | null {
     cz = P.z[e]!;
   const l = Math.hypot(hx, hz);
   if (!(l > 1e-9)) return null;
+  if (rollOnly()) {
+    aimWhy = 'bed';
+    sayWhyNot();
+    return null;
+  }
   const speed = (params.impulse * ROOM_PUSH) / shell.world.components.Mass.value[e]!;
   Object.assign(aim, { kind: 'cube', dx: hx / l, dz: hz / l, speed });
   const d = speed ** 2 / (2 * ROOM_FRICTION * 9.81);
@@ -1565,6 +1637,11 @@ function snapToBed(x: number, z: number): [number, number] {
   return bedSnap(padPuzzle(layout, pads.pad), x, z);
 }
 
+/** Room mode: whether the lit pad's ROLL tiles cover the whole floor (scene.ts ROLL_ONLY_BED): no slide or flick stops anywhere. */
+function rollOnly(): boolean {
+  return params.mode === 'room' && !pads.done && edgeCells(padPuzzle(layout, pads.pad)).length === 0 && (layout.beds[pads.pad] ?? -1) > 0;
+}
+
 /**
  * A click at (ndcX, ndcY). Room: the push of `aimAt`, an impulse at the centre of mass that sets the
  * cube's horizontal velocity to the push's (whatever it had: the same click always does the same
@@ -1596,6 +1673,7 @@ function pushCube(p: Push): void {
   const c = shell.world.components,
     m = c.Mass.value[e]!;
   pads.start(shell.world.time);
+  settleArmed = false;
   // A slide keeps the top face: the next pad that wants a face must be rolled onto after it.
   pads.slid();
   // A slide aimed at the lit pad with the face it wants on top: say at once that only a roll takes it.
@@ -1950,20 +2028,22 @@ function updateStatus(wx: number, wy: number, wz: number): void {
     const off =
       spins.startedAt < 0 ? Math.hypot(wx - spins.targets[0]![0], wy - spins.targets[0]![1], wz - spins.targets[0]![2]) : spins.off;
     // A phone's numbers line is one line of about 40 characters: its short form keeps the tolerance and the clock in sight.
+    // The meter: ten cells, eight of them filled at the ball's edge (spin-challenge.ts `spinCloseness`).
+    const bar = closenessBar(spinCloseness(off));
     const how =
       spins.held > 0
-        ? `holding ${spins.held.toFixed(1)} of ${SPIN_HOLD} s ✓`
+        ? `${bar} holding ${spins.held.toFixed(1)} of ${SPIN_HOLD} s ✓`
         : touch
-          ? `off ${off.toFixed(2)} rad/s (ball: < ${SPIN_TOLERANCE})`
-          : `off by ${off.toFixed(2)} rad/s (in the ball: under ${SPIN_TOLERANCE})`;
+          ? `${bar} off ${off.toFixed(1)}`
+          : `${bar} off by ${off.toFixed(2)} rad/s (in the ball: under ${SPIN_TOLERANCE})`;
     status.set({
       goal: touch
         ? `Magenta arrow onto cyan, hold ${SPIN_HOLD} s (${spins.target + 1} of ${SPIN_TARGETS})`
         : `Turn the magenta spin arrow onto the cyan one and hold it ${SPIN_HOLD} s (${spins.target + 1} of ${SPIN_TARGETS})`,
       numbers: `${how}${touch ? '' : ` · spin ${w.toFixed(2)} rad/s`} · ${spins.time(t).toFixed(1)} s`,
       hint: touch
-        ? 'Arrows push the magenta tip that way, Near/Far toward you/away; ease off in time'
-        : 'W/S push the magenta tip up/down on screen, A/D left/right, Q/E toward you/away; X stops it; ease off before it overshoots',
+        ? 'Torque (green arrow) moves ω along it: aim it down the white gap, let go early: the spin keeps going'
+        : "W/S A/D Q/E torque: the green arrow moves ω's tip; aim it down the white gap, let go before the ball: L is kept, it coasts on",
     });
   }
 }
@@ -2110,6 +2190,8 @@ rulesText.style.cssText = 'margin-top: 6px; display: none';
 const bedLegend = document.createElement('div');
 bedLegend.dataset.hud = 'bed-legend';
 bedLegend.style.cssText = 'margin-top: 6px; display: none; align-items: center; gap: 7px; font: 600 12px/1.25 system-ui, sans-serif';
+/** The legend's words: what the lit pad's tiles ask (`markChips` says more when they cover the floor). */
+const bedWords = document.createElement('span');
 {
   const swatch = document.createElement('span');
   swatch.textContent = '⟳';
@@ -2117,9 +2199,7 @@ bedLegend.style.cssText = 'margin-top: 6px; display: none; align-items: center; 
   swatch.style.cssText =
     'flex: 0 0 auto; width: 24px; height: 24px; box-sizing: border-box; border: 2px dashed #dbe5f7; border-radius: 5px;' +
     'background: rgba(196, 210, 238, 0.3); color: #fff; display: flex; align-items: center; justify-content: center; font: 700 15px system-ui, sans-serif';
-  const words = document.createElement('span');
-  words.textContent = 'ROLL tiles: a slide stops at their edge, roll across them';
-  bedLegend.append(swatch, words);
+  bedLegend.append(swatch, bedWords);
 }
 rules.append(rulesRow, bedLegend, rulesText);
 (app.canvas.parentElement ?? document.body).append(rules);
@@ -2153,8 +2233,8 @@ function showRules(): void {
   );
   const three = `${stars(3)}: par + ${PAR_SLACK[0]} moves or fewer.`;
   rulesText.textContent = touch
-    ? `Land on the pads in turn. From pad 2, ROLL on with the chip's colour on top (a slide keeps the top face); from pad 3 slides stop at the ROLL tiles round the pad. Every slide, roll and turn is a move; "best: N more moves" counts the fewest left. The clock runs only while the cube is still. ${three}`
-    : `Land on the pads in turn. From pad 2, ROLL on (W A S D) with the chip's colour on top: a slide keeps the top face. From pad 3 slides stop at the ROLL tiles round the pad, so the route across them decides the face: the net at the left shows what each roll brings up, and "best: N more moves" counts the fewest left. Every slide, roll and quarter turn (Q E) is a move. The clock runs only while the cube is still. ${three}`;
+    ? `Land on the pads in turn. From pad 2, ROLL on with the chip's colour on top (a slide keeps the top face); from pad 3 slides stop at the ROLL tiles round the pad; pad 5 has them over the whole floor: roll all the way there. Every slide, roll and turn is a move; "best: N more moves" counts the fewest left. The clock runs only while the cube is still. ${three}`
+    : `Land on the pads in turn. From pad 2, ROLL on (W A S D) with the chip's colour on top: a slide keeps the top face. From pad 3 slides stop at the ROLL tiles round the pad, so the route across them decides the face; pad 5 has them over the whole floor, so plan a route of rolls from pad 4: the net at the left shows what each roll brings up, and "best: N more moves" counts the fewest left. Every slide, roll and quarter turn (Q E) is a move. The clock runs only while the cube is still. ${three}`;
   hideRules();
   markChips();
 }
@@ -2525,6 +2605,12 @@ shell.expose({
     /** Free spin: the lit target's index (SPIN_TARGETS once won), the targets (rad/s, world frame), how long ω has held on it (s), how far off it is (rad/s), and when the round was won (s, -1 if not yet). */
     spin: { target: spins.target, targets: spins.targets.map((v) => [...v]), held: spins.held, off: spins.off, wonAt: spins.wonAt },
   }),
+  /**
+   * Free spin: the guides as last drawn (spin-look.ts): the gap from ω to the target (rad/s, world
+   * frame), the torque's alignment with it (a cosine), the hold ring's fill in [0, 1], whether the
+   * torque arrow and the ghost show, and the meter's closeness of that gap (spin-challenge.ts `spinCloseness`).
+   */
+  spinLook: () => ({ ...spinLook.shown, gap: [...spinLook.shown.gap], closeness: spinCloseness(Math.hypot(...spinLook.shown.gap)) }),
   /** Starts the round's clock (the pads' or the flips'), as the player's first input does. */
   startClock,
   /** Clicks at (ndcX, ndcY) as the mouse would; returns whether the cube was pushed (on the pivot: hit). */

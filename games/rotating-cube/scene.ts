@@ -31,7 +31,16 @@ import {
   setAngularVelocity,
   spinAngularMomentum,
 } from '@bitphysics/physics';
-import { gridOrientationOf, moveRoute, type RollMove, type RollPuzzle } from './roll-puzzle';
+import {
+  GRID_IDENTITY,
+  type GridOrientation,
+  gridOrientationOf,
+  moveRoute,
+  type RollMove,
+  type RollPuzzle,
+  rollOrientation,
+  turnOrientation,
+} from './roll-puzzle';
 
 /** The modes, the default first (the M key cycles through them in this order). */
 export const MODES = ['room', 'cube', 'flip'] as const;
@@ -237,6 +246,44 @@ export const FLIP_DRAG = 0.1;
  * intermediate axis (0.34 kg m^2) adds 2.9 rad/s a second, against the drag's 1 rad/s at 10 rad/s.
  */
 export const FLIP_PUSH = 2;
+
+/**
+ * Room mode: how fast a rolled cube's leftover motion dies once it lies flat on its new face, 1/s:
+ * at 12/s a landing's 0.3 m/s of slide and its rock back and forth fade within about 0.2 s, so a
+ * roll ends square on its cell instead of skidding and rocking on for another half second.
+ */
+export const ROLL_SETTLE_RATE = 12;
+
+/**
+ * A forces-stage system for the room: while `on()` (the game: a roll key's roll has ended and the
+ * cube has not been pushed since) and the cube lies flat on a face (its centre under 0.53 m, a body
+ * axis within 8 degrees of vertical), its level velocity and its spin about level axes decay at
+ * ROLL_SETTLE_RATE (scaled by exp(-rate dt) each step); its spin about the vertical (the yaw
+ * keeper's) and its fall are left alone. Off the floor, on an edge or mid-roll it does nothing.
+ */
+export function rollSettle(body: number, on: () => boolean): System {
+  const flat = Math.cos((8 * Math.PI) / 180);
+  return (world) => {
+    if (!on()) return;
+    const P = world.components.Position,
+      V = world.components.Velocity,
+      W = world.components.AngularVelocity,
+      q = world.components.Orientation;
+    if (P.y[body]! > 0.53) return;
+    const x = q.x[body]!,
+      y = q.y[body]!,
+      z = q.z[body]!,
+      w = q.w[body]!;
+    // The world y components of the body's axes: row y of its rotation matrix.
+    const up = Math.max(Math.abs(2 * (x * y + w * z)), Math.abs(1 - 2 * (x * x + z * z)), Math.abs(2 * (y * z - w * x)));
+    if (up < flat) return;
+    const k = Math.exp(-ROLL_SETTLE_RATE * world.dt);
+    V.x[body] = V.x[body]! * k;
+    V.z[body] = V.z[body]! * k;
+    W.x[body] = W.x[body]! * k;
+    W.z[body] = W.z[body]! * k;
+  };
+}
 
 /** A forces-stage system: the torque -drag L on `body` (flip mode's pivot drag, `FLIP_DRAG`) in the steps where `on` returns true. */
 function flipDrag(world: PhysicsWorld, body: number, drag: number, on: () => boolean): System {
@@ -448,7 +495,7 @@ export interface PadLayout {
   readonly faces: readonly number[];
   /** Each pad's half edge, m, in (0, PAD_HALF]: the pads shrink as the round goes on. */
   readonly halves: readonly number[];
-  /** Each pad's bed of tiles, cells (roll-puzzle.ts `RollPuzzle.bed`): -1 none, 0 the pad's cell, 1 the cells around it too. */
+  /** Each pad's bed of tiles, cells (roll-puzzle.ts `RollPuzzle.bed`): -1 none, 0 the pad's cell, 1 the cells around it too, ROLL_ONLY_BED the whole floor. */
   readonly beds: readonly number[];
 }
 /** Pads in a round. */
@@ -456,11 +503,17 @@ export const PAD_COUNT = 5;
 /** Half edges of the pads in a round, m: the later pads are smaller targets. */
 export const PAD_HALVES: readonly number[] = Object.freeze([0.6, 0.55, 0.5, 0.45, 0.42]);
 /**
- * The pads' beds of tiles, cells (roll-puzzle.ts): the first pad none (slide onto it), the second its
- * own cell (roll on from beside it), the rest the cells around them too (roll across the bed, so the
- * route decides the face on top).
+ * A bed this wide covers every cell of the room (ROOM_HALF 3 m: no cell lies ROLL_ONLY_BED m from a
+ * pad inside it): no slide stops anywhere, so the cube rolls all the way from where it rests, and the
+ * route across the floor decides the face on top (roll-puzzle.ts `edgeCells` is empty).
  */
-export const PAD_BEDS: readonly number[] = Object.freeze([-1, 0, 1, 1, 1]);
+export const ROLL_ONLY_BED = 9;
+/**
+ * The pads' beds of tiles, cells (roll-puzzle.ts): the first pad none (slide onto it), the second its
+ * own cell (roll on from beside it), the next two the cells around them too (roll across the bed, so
+ * the route decides the face on top), the last the whole floor (ROLL_ONLY_BED: rolls only, planned).
+ */
+export const PAD_BEDS: readonly number[] = Object.freeze([-1, 0, 1, 1, ROLL_ONLY_BED]);
 /** The largest |x| and |z| of a resting cube's centre the roll puzzle uses, m: the room's inside half width less the cube's half edge and 5 cm. */
 export const CELL_REACH = ROOM_HALF - 0.55;
 /** A pad centre lies within this of the room's centre on x and z, m (clear of the walls by more than a pad and the cube's half diagonal). */
@@ -479,14 +532,16 @@ export const CLASSIC_LAYOUT: PadLayout = Object.freeze({
 /**
  * A round's layout from `seed` (the same seed, the same round): PAD_COUNT pads within PAD_REACH of
  * the centre, the first at least 1.5 m from where the cube lands (the centre), each at least 2 m from
- * the one before and 1.4 m from every other (none overlap); the first takes any face, the others each want one, in a sequence that grows
- * harder: the second a face beside LANDING_FACE (one roll), then the face opposite the previous
- * pad's (two rolls straight across its bed), then one beside it, then the same again (a route
- * that brings the top round to the top); the pads shrink (PAD_HALVES) and lie in beds (PAD_BEDS).
- * Always solvable by rolling on (`PadChallenge`): a pad lies within PAD_REACH of the centre, so along
- * each axis the spot 1 m to one side of it (a roll's length) lies within ROOM_HALF - 0.9 m of the
- * centre, where the cube fits; set the wanted face up as a side facing away from the pad (rolls
- * elsewhere, Q/E spins), slide to that spot (a slide keeps the faces) and roll on.
+ * the one before and 1.4 m from every other (none overlap); the first takes any face, the others each
+ * want one, in a sequence that grows harder: the second a face beside LANDING_FACE (one roll), then the
+ * face opposite the previous pad's (two rolls straight across its bed), then one beside it, and last
+ * a pad rolled to across the whole floor with the face and spot that take the most moves
+ * (`rollOnlyPad`); the pads shrink (PAD_HALVES) and lie in beds (PAD_BEDS).
+ * The pads with a bed of 1 or less are always solvable by rolling on (`PadChallenge`): a pad lies
+ * within PAD_REACH of the centre, so along each axis the spot 1 m to one side of it (a roll's length)
+ * lies within ROOM_HALF - 0.9 m of the centre, where the cube fits; set the wanted face up as a side
+ * facing away from the pad (rolls elsewhere, Q/E spins), slide to that spot (a slide keeps the faces)
+ * and roll on. The last is solvable by rolls from the pad before (on its grid, `rollOnlyPad`).
  * @param seed any finite number (floored to an integer).
  * @throws RangeError if `seed` is not finite.
  */
@@ -495,7 +550,9 @@ export function padLayout(seed: number): PadLayout {
   const s = Math.floor(seed);
   const random = seededRandom(s);
   const pads: [number, number][] = [];
-  for (let k = 0; k < PAD_COUNT; k++) {
+  /** Lays pad k (pads.length) at random until it is clear of the ones before. */
+  const place = (): void => {
+    const k = pads.length;
     for (let tries = 0; ; tries++) {
       const x = Math.round((2 * random() - 1) * PAD_REACH * 10) / 10,
         z = Math.round((2 * random() - 1) * PAD_REACH * 10) / 10;
@@ -509,7 +566,8 @@ export function padLayout(seed: number): PadLayout {
         break;
       }
     }
-  }
+  };
+  for (let k = 0; k < PAD_COUNT; k++) place();
   const faces = [-1];
   // Beside a face: the four faces on the other two axes.
   const beside = (f: number): number => {
@@ -519,8 +577,67 @@ export function padLayout(seed: number): PadLayout {
   faces.push(beside(LANDING_FACE));
   faces.push(faces[1]! ^ 1);
   faces.push(beside(faces[2]!));
-  faces.push(faces[3]!);
+  // The last pad laid at random goes (it is drawn so that a seed's other pads and faces stay as they were);
+  // the roll-only one takes its place.
+  pads.pop();
+  // The pad before the last one moves until the last has a spot (rare: it sat where no spot 3 to 5 cells off is clear).
+  let lastPad = rollOnlyPad(pads, faces, random);
+  for (let tries = 0; !lastPad && tries < 100; tries++) {
+    pads.pop();
+    place();
+    lastPad = rollOnlyPad(pads, faces, random);
+  }
+  const [last, want] = lastPad ?? [[pads[PAD_COUNT - 2]![0] > 0 ? -2 : 2, 0] as [number, number], LANDING_FACE ^ 1];
+  pads.push(last);
+  faces.push(want);
   return Object.freeze({ seed: s, pads: Object.freeze(pads), faces: Object.freeze(faces), halves: PAD_HALVES, beds: PAD_BEDS });
+}
+
+/**
+ * The round's last pad, rolled to across the whole floor (ROLL_ONLY_BED), and the face it wants: a
+ * whole number of cells from the pad before (so the grid the cube rolls on from there lines up with
+ * it), 3 to 5 cells along the floor's rows away, within PAD_REACH and 1.4 m from every pad before
+ * (1.1 m if no spot is); of those, and of the faces, the one (taken by `random` among equals) with the most moves
+ * (`moveRoute`) from where a shortest play of the pads before leaves the cube (dropped at the centre
+ * with LANDING_FACE up), so the last pad asks for a route that is planned.
+ * @returns [[x, z], face], or null if no spot fits (`padLayout` then lays the pad before again).
+ */
+function rollOnlyPad(
+  pads: readonly (readonly [number, number])[],
+  faces: readonly number[],
+  random: () => number,
+): [[number, number], number] | null {
+  let at: readonly [number, number] = [0, 0],
+    o: GridOrientation = GRID_IDENTITY;
+  for (let k = 0; k < pads.length; k++) {
+    const p: RollPuzzle = { pad: pads[k]!, want: faces[k]!, bed: PAD_BEDS[k]!, reach: CELL_REACH };
+    const route = moveRoute(p, [Math.round(at[0] - p.pad[0]), Math.round(at[1] - p.pad[1])], o) ?? [];
+    for (const m of route)
+      if (m.kind === 'roll') o = rollOrientation(o, m.direction);
+      else if (m.kind === 'turn') o = turnOrientation(o, m.direction);
+    at = p.pad;
+  }
+  const prev = pads[pads.length - 1]!;
+  let best: [[number, number], number][] = [],
+    most = -1;
+  // Spaced 1.4 m from every pad before if any spot allows, else 1.1 m (clear of the others: half edges up to 0.6 m and 0.42 m).
+  for (const gap of [1.4, 1.1]) {
+    if (best.length > 0) break;
+    for (let i = -4; i <= 4; i++)
+      for (let j = -4; j <= 4; j++) {
+        const x = Math.round((prev[0] + i) * 10) / 10,
+          z = Math.round((prev[1] + j) * 10) / 10;
+        const cells = Math.abs(i) + Math.abs(j);
+        if (cells < 3 || cells > 5 || Math.max(Math.abs(x), Math.abs(z)) > PAD_REACH) continue;
+        if (!pads.every(([px, pz]) => Math.hypot(x - px, z - pz) >= gap)) continue;
+        for (let want = 0; want < 6; want++) {
+          const n = moveRoute({ pad: [x, z], want, bed: ROLL_ONLY_BED, reach: CELL_REACH }, [-i, -j], o)?.length ?? -1;
+          if (n > most) [best, most] = [[], n];
+          if (n === most) best.push([[x, z], want]);
+        }
+      }
+  }
+  return best.length > 0 ? best[Math.floor(random() * best.length)]! : null;
 }
 
 /**

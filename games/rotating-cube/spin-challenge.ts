@@ -115,3 +115,39 @@ export class SpinChallenge {
     return true;
   }
 }
+
+/** The closeness meter's mark for the ball's edge: ω's tip within SPIN_TOLERANCE of the target reads at least this. */
+export const SPIN_IN_BALL = 0.8;
+
+/**
+ * How near ω is to the lit target, for the meter beside the numbers, in [0, 1]: 1 on the target,
+ * SPIN_IN_BALL at the ball's edge (SPIN_TOLERANCE off), falling linearly from there to 0 at twice
+ * SPIN_RATE off (ω spinning the other way at the target's rate) and beyond. Fine steps near the
+ * target, where the player eases off, and a clear mark for "in the ball".
+ * @param off the distance from ω to the target, rad/s (SpinChallenge `off`).
+ * @throws RangeError if `off` is not a finite number >= 0.
+ */
+export function spinCloseness(off: number): number {
+  if (!(off >= 0) || !Number.isFinite(off)) throw new RangeError(`spinCloseness: off must be a finite number >= 0, got ${off}`);
+  if (off <= SPIN_TOLERANCE) return SPIN_IN_BALL + (1 - SPIN_IN_BALL) * (1 - off / SPIN_TOLERANCE);
+  return SPIN_IN_BALL * Math.max(0, 1 - (off - SPIN_TOLERANCE) / (2 * SPIN_RATE - SPIN_TOLERANCE));
+}
+
+/**
+ * How well a torque `t` (N m, world frame) points along the gap `gap` from ω to the target (rad/s,
+ * the target less ω): the cosine of the angle between them, in [-1, 1]; 0 when either is next to
+ * nothing (under 1e-9). A cube's moments are equal, so the torque turns ω's tip straight along it:
+ * 1 closes the gap fastest, below 0 widens it.
+ */
+export function pushAlignment(t: ArrayLike<number>, gap: ArrayLike<number>): number {
+  const lt = Math.hypot(t[0]!, t[1]!, t[2]!),
+    lg = Math.hypot(gap[0]!, gap[1]!, gap[2]!);
+  if (!(lt > 1e-9) || !(lg > 1e-9)) return 0;
+  return Math.max(-1, Math.min(1, (t[0]! * gap[0]! + t[1]! * gap[1]! + t[2]! * gap[2]!) / (lt * lg)));
+}
+
+/** The closeness as a bar of 10 cells ('▰' filled, '▱' empty), filled to the nearest cell, for the status row. */
+export function closenessBar(closeness: number): string {
+  const n = Math.round(Math.max(0, Math.min(1, closeness)) * 10);
+  return '▰'.repeat(n) + '▱'.repeat(10 - n);
+}

@@ -602,7 +602,8 @@ describe('phone controls', () => {
 
   it("rotating cube: the spin round's numbers line fits the phone's width while the arrows are far apart", async () => {
     // The numbers line is one line, cut with an ellipsis where it is wider than the screen: "off by
-    // 1.55 rad/s (in the ball: under 0…" hid the tolerance and the clock.
+    // 1.55 rad/s (in the ball: under 0…" hid the tolerance and the clock. On a phone the closeness
+    // meter (ten cells, eight at the ball's edge) stands for the tolerance.
     const g = await h.openGame('rotating-cube', { ...PHONE, query: { mode: 'cube' } });
     // Spun far off the first target (about 11 rad/s): "off" with two digits before the point is the
     // widest the line gets (the page's own spin starts well under that).
@@ -621,10 +622,10 @@ describe('phone controls', () => {
     const shown = await g.waitFor(() => {
       const el = document.querySelector<HTMLElement>('[data-hud="challenge"] [data-hud="numbers"]');
       const text = el?.textContent ?? '';
-      return /off.* \d\d\.\d\d/.test(text) ? { text, over: el!.scrollWidth - el!.clientWidth } : null;
+      return /off \d\d\.\d/.test(text) ? { text, over: el!.scrollWidth - el!.clientWidth } : null;
     }, null);
-    // Whole: the tolerance and the clock show (scrollWidth equals clientWidth when nothing is cut).
-    expect(shown.text).toMatch(/0\.3.* · \d+\.\d s$/);
+    // Whole: the meter, the distance and the clock show (scrollWidth equals clientWidth when nothing is cut).
+    expect(shown.text).toMatch(/^[▰▱]{10} off \d+\.\d · \d+\.\d s$/);
     expect(shown.over).toBe(0);
     expect(g.errors).toEqual([]);
     await g.close();

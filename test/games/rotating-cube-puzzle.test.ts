@@ -32,8 +32,10 @@ import {
   PadChallenge,
   padLayout,
   padPuzzle,
+  ROLL_ONLY_BED,
   ROLL_SPIN_MAX,
   ROLL_TORQUE,
+  rollSettle,
   rotatingCubeWorldOptions,
   topFace,
   torqueCouple,
@@ -92,7 +94,7 @@ function setDown(world: PhysicsWorld, body: number, x: number, z: number, o: Gri
 }
 
 /** A room world with its cube and a roll torque the caller sets: `roll(d)` rolls the cube one cell along level world direction d as the game's held key does. */
-function rollingRoom() {
+function rollingRoom(settle = false) {
   const world = createPhysicsWorld(rotatingCubeWorldOptions());
   const h = buildRotatingCube(world);
   const axis = [0, 0, 0];
@@ -102,8 +104,17 @@ function rollingRoom() {
     'forces',
     torqueCouple(h.body, () => (on ? axis.map((a) => a * ROLL_TORQUE) : [0, 0, 0])),
   );
+  // As the game: once the roll's torque stops, the landing settles (scene.ts rollSettle).
+  if (settle)
+    addSystem(
+      world,
+      'forces',
+      rollSettle(h.body, () => !on),
+    );
   const P = world.components.Position,
     W = world.components.AngularVelocity;
+  /** Steps the last roll took to come to rest on its next face for good (-1: it did not). */
+  let rollSteps = -1;
   const roll = (d: number): void => {
     const dx = d === 0 ? 1 : d === 1 ? -1 : 0,
       dz = d === 4 ? 1 : d === 5 ? -1 : 0;
@@ -112,14 +123,23 @@ function rollingRoom() {
     const x0 = P.x[h.body]!,
       z0 = P.z[h.body]!,
       top0 = topFace(world, h.body);
+    rollSteps = -1;
     for (let i = 0; i < 240; i++) {
       const spin = W.x[h.body]! * axis[0]! + W.z[h.body]! * axis[2]!;
       on = spin < ROLL_SPIN_MAX && topFace(world, h.body) === top0 && Math.hypot(P.x[h.body]! - x0, P.z[h.body]! - z0) < 0.5;
       step(world);
+      // The step from which the cube, over on its next face, stays at rest (under 0.05 m/s and 0.1 rad/s).
+      const V = world.components.Velocity;
+      const rest =
+        topFace(world, h.body) !== top0 &&
+        Math.hypot(V.x[h.body]!, V.y[h.body]!, V.z[h.body]!) < 0.05 &&
+        Math.hypot(W.x[h.body]!, W.y[h.body]!, W.z[h.body]!) < 0.1;
+      if (!rest) rollSteps = -1;
+      else if (rollSteps < 0) rollSteps = i + 1;
     }
     on = false;
   };
-  return { world, body: h.body, roll };
+  return { world, body: h.body, roll, steps: () => rollSteps };
 }
 
 describe('rotating-cube roll puzzle: the grid model', () => {
@@ -281,8 +301,12 @@ describe('rotating-cube roll puzzle: the rounds', () => {
       expect(layout.beds).toEqual(PAD_BEDS);
       for (let k = 0; k < PAD_COUNT; k++) {
         const p = padPuzzle(layout, k);
+        // The pad rolled to across the whole floor is rolled to from the pad before (no slide stops on its floor).
+        const prev = layout.pads[k - 1];
+        const from: [number, number] | null =
+          p.bed === ROLL_ONLY_BED && prev ? [Math.round(prev[0] - p.pad[0]), Math.round(prev[1] - p.pad[1])] : null;
         for (const o of allOrientations()) {
-          const par = movePar(p, null, o);
+          const par = movePar(p, from, o);
           expect(par, `seed ${seed} pad ${k}`).toBeGreaterThanOrEqual(1);
           expect(par).toBeLessThanOrEqual(8);
           if (p.bed >= 1) {
@@ -293,6 +317,73 @@ describe('rotating-cube roll puzzle: the rounds', () => {
       }
     }
     expect(planned / tiled).toBeGreaterThan(0.5);
+  });
+
+  it("the last pad of a round is rolled to across the whole floor: no slide stops anywhere, and its par from the pad before is the round's highest, 4 or more", () => {
+    // A shortest play of the round from the drop (the centre, LANDING_FACE up, the identity): each pad's par from where the one before left the cube.
+    const pars: number[][] = [];
+    for (let seed = 0; seed < 60; seed++) {
+      const layout = padLayout(seed);
+      const last = padPuzzle(layout, PAD_COUNT - 1);
+      expect(last.bed).toBe(ROLL_ONLY_BED);
+      // No cell of the room is outside its tiles: every slide is refused, and bedSnap has nowhere to stop one.
+      expect(edgeCells(last)).toEqual([]);
+      // On the grid of the pad before (a whole number of cells away), so rolls from there line up with it.
+      const prev = layout.pads[PAD_COUNT - 2]!;
+      for (const v of [0, 1]) expect(Math.abs(last.pad[v]! - prev[v]! - Math.round(last.pad[v]! - prev[v]!))).toBeLessThan(1e-9);
+      let at: readonly [number, number] = [0, 0],
+        o: GridOrientation = GRID_IDENTITY;
+      const row: number[] = [];
+      for (let k = 0; k < PAD_COUNT; k++) {
+        const p = padPuzzle(layout, k);
+        const route = moveRoute(p, [Math.round(at[0] - p.pad[0]), Math.round(at[1] - p.pad[1])], o)!;
+        expect(route, `seed ${seed} pad ${k}`).not.toBeNull();
+        if (k === PAD_COUNT - 1) expect(route.every((m) => m.kind !== 'slide')).toBe(true);
+        for (const m of route)
+          if (m.kind === 'roll') o = rollOrientation(o, m.direction);
+          else if (m.kind === 'turn') o = turnOrientation(o, m.direction);
+        row.push(route.length);
+        at = p.pad;
+      }
+      pars.push(row);
+    }
+    const mean = (k: number): number => pars.reduce((s, r) => s + r[k]!, 0) / pars.length;
+    // Measured over 200 seeds: pad 5's par 4.61 (4 to 5) with a bed of one cell, 5.44 (4 to 6) rolled all the way.
+    for (const row of pars) expect(row[PAD_COUNT - 1]).toBeGreaterThanOrEqual(4);
+    expect(mean(PAD_COUNT - 1)).toBeGreaterThan(5);
+    for (let k = 1; k < PAD_COUNT; k++) expect(mean(k)).toBeGreaterThan(mean(k - 1));
+  });
+
+  it('a rolled cube settles on its next cell: with rollSettle each landing comes to rest sooner and nearer the cell centre (under 0.065 m) than without, where it skids up to 0.15 m past', () => {
+    const rolls = [false, true].map((settle) => {
+      const { world, body, roll, steps } = rollingRoom(settle);
+      setDown(world, body, 0, 0, GRID_IDENTITY);
+      const out: { steps: number; miss: number }[] = [];
+      // Four rolls: +x, +z, -x, -z (a square back to the start), each from rest.
+      const cells = [
+        [0, 1, 0],
+        [4, 1, 1],
+        [1, 0, 1],
+        [5, 0, 0],
+      ] as const;
+      for (const [d, i, j] of cells) {
+        roll(d);
+        const P = world.components.Position;
+        out.push({ steps: steps(), miss: Math.hypot(P.x[body]! - i, P.z[body]! - j) });
+      }
+      return out;
+    });
+    // Measured at 60 steps a second (the torque held to the tipping point, as `roll`): without the settle
+    // the rolls rest after 60 or 61 steps, 0.01 to 0.15 m (mean 0.09 m) off the cell's centre; with it after
+    // 56 steps, 0.004 to 0.051 m (mean 0.03 m) off. Limits: a third of the miss's spread either way.
+    const meanMiss = (rs: { miss: number }[]): number => rs.reduce((s, r) => s + r.miss, 0) / rs.length;
+    expect(Math.max(...rolls[0]!.map((r) => r.miss))).toBeGreaterThan(0.12);
+    for (const [i, r] of rolls[1]!.entries()) {
+      expect(r.steps).toBeGreaterThan(0);
+      expect(r.steps).toBeLessThan(rolls[0]![i]!.steps);
+      expect(r.miss).toBeLessThan(0.065);
+    }
+    expect(meanMiss(rolls[1]!)).toBeLessThan(meanMiss(rolls[0]!) / 2);
   });
 
   it("a route the search finds, played in the physics world (slides and turns set by hand, rolls by the game's torque), lands the cube on the pad in exactly par moves", () => {
@@ -310,12 +401,15 @@ describe('rotating-cube roll puzzle: the rounds', () => {
         const O = world.components.Orientation,
           P = world.components.Position;
         const o0 = allOrientations()[(seed * 7 + k) % 24]!;
-        // Away from the pad: the room's far corner from it (at least 2.45 m off on each axis: beyond the edge row, or half a cell off it).
-        const away = layout.pads[k]!.map((v) => (v > 0 ? -CELL_REACH : CELL_REACH)) as [number, number];
+        // Away from the pad: the room's far corner from it (at least 2.45 m off on each axis: beyond the
+        // edge row, or half a cell off it); for the pad rolled to across the whole floor, the pad before.
+        const last = layout.beds[k] === ROLL_ONLY_BED;
+        const [px0, pz0] = layout.pads[k]!;
+        const away = (last ? [...layout.pads[k - 1]!] : layout.pads[k]!.map((v) => (v > 0 ? -CELL_REACH : CELL_REACH))) as [number, number];
         setDown(world, body, away[0], away[1], o0);
         const movesAt = pads.moves;
         const par = pads.pars[k]!;
-        const route = moveRoute(padPuzzle(layout, k), null, o0)!;
+        const route = moveRoute(padPuzzle(layout, k), last ? [Math.round(away[0] - px0), Math.round(away[1] - pz0)] : null, o0)!;
         expect(route.length).toBe(par);
         const here = (): GridOrientation => gridOrientationOf(O.x[body]!, O.y[body]!, O.z[body]!, O.w[body]!);
         for (const move of route as RollMove[]) {

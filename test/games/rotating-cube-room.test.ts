@@ -299,13 +299,16 @@ describe('rotating-cube challenges', () => {
       expect(Math.hypot(pads[0]![0], pads[0]![1])).toBeGreaterThanOrEqual(1.5);
       for (let i = 0; i < PAD_COUNT; i++)
         for (let j = 0; j < i; j++)
-          expect(Math.hypot(pads[i]![0] - pads[j]![0], pads[i]![1] - pads[j]![1])).toBeGreaterThanOrEqual(j === i - 1 ? 2 : 1.4);
-      // Faces: any, then one beside the landing face (one roll), the opposite of it (two), one beside, the same again.
+          expect(Math.hypot(pads[i]![0] - pads[j]![0], pads[i]![1] - pads[j]![1])).toBeGreaterThanOrEqual(
+            j === i - 1 ? 2 : i === PAD_COUNT - 1 ? 1.1 : 1.4,
+          );
+      // Faces: any, then one beside the landing face (one roll), the opposite of it (two), one beside, and
+      // the last pad's whichever takes the most moves (roll-puzzle test), any face but none.
       expect(faces[0]).toBe(-1);
       expect(faces[1]! >> 1).not.toBe(LANDING_FACE >> 1);
       expect(faces[2]).toBe(faces[1]! ^ 1);
       expect(faces[3]! >> 1).not.toBe(faces[2]! >> 1);
-      expect(faces[4]).toBe(faces[3]!);
+      expect(faces[4]).toBeGreaterThanOrEqual(0);
       // The pads shrink.
       for (let i = 1; i < PAD_COUNT; i++) expect(halves[i]!).toBeLessThan(halves[i - 1]!);
     }
