@@ -12,7 +12,7 @@ export const CARD_LINES: Readonly<Record<string, string>> = {
   'flight-simulator': 'Fly a jet over the hills and through the rings without stalling.',
   'bouncing-balls': 'Throw balls through a hoop that moves after every basket: how many can you score in 60 seconds?',
   'rotating-cube':
-    'Roll a cube onto five glowing pads, the right face up, in as few moves as you can; steer a spinning cube onto three target spins; and keep a box spinning in the band while it flips 10 times in 20 s.',
+    'Roll a cube onto five glowing pads, the right face up, in as few moves as you can. Then steer a spinning cube onto target spins, and keep a box in the band while it flips 10 times in 20 s.',
   'solar-system': 'Launch a probe from the Earth to the planets: aim, pick your moment, then steer it there.',
   'lab-projectile-drag': 'Fire a ball off a cliff with and without air resistance and see where it lands.',
   'lab-orbits': 'Flick planets into orbit around a sun and watch their paths.',
