@@ -39,11 +39,13 @@ import {
   flagParam,
   getSound,
   isTouchDevice,
+  numberCheck,
   numberParam,
   onButtonPress,
   pageLayout,
   pauseUnderDrawers,
   seedParam,
+  storedValue,
 } from '@bitphysics/game-kit';
 import { createPauseOverlay, startPixiGame } from '@bitphysics/game-kit/pixi';
 import { type PhysicsWorld, Rng, slotOf, stateHash } from '@bitphysics/physics';
@@ -72,18 +74,9 @@ const search = new URLSearchParams(location.search);
 /** Levels unless ?holes asks for the classic endless game. */
 const levels = !search.has('holes');
 
-const BEST_KEY = 'bitphysics.black-hole.best';
-
-/** The best score kept in local storage (0 when none, or storage is unavailable). */
-function readBest(): number {
-  try {
-    const v = Number(localStorage.getItem(BEST_KEY));
-    return Number.isFinite(v) && v > 0 ? v : 0;
-  } catch {
-    return 0;
-  }
-}
-let best = readBest();
+/** The best score kept in local storage: whole points up to 1e9 (0 when none, garbled, or storage is unavailable). */
+const bestStore = storedValue('bitphysics.black-hole.best', numberCheck({ max: 1e9, integer: true }), 0);
+let best = bestStore.read();
 /** The best score when the game in play began: a final score above it is a new best (the game-over card says so). */
 let bestAtStart = best;
 
@@ -153,11 +146,7 @@ const engine = sound.engine('propeller');
 function recordScore(score: number): void {
   if (score <= best) return;
   best = score;
-  try {
-    localStorage.setItem(BEST_KEY, String(score));
-  } catch {
-    /* private mode: kept for this page only */
-  }
+  bestStore.write(score);
 }
 const params = {
   holes: numberParam('holes', { default: 3, min: 1, max: MAX_HOLES, integer: true }),

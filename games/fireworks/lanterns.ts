@@ -25,6 +25,7 @@
  * nothing is a miss (`watchBursts`), which the page says near it.
  * Pure rules: no DOM, no pixi.
  */
+import { listCheck, numberCheck, type StorageOptions, type StoredValue, storedValue } from '@bitphysics/game-kit';
 import { type PhysicsWorld, query, slotOf } from '@bitphysics/physics';
 import { RECIPES, type RecipeName } from './recipes';
 import { burstSize, type FireworksShow, FLASHES, FUSE, MAX_HOLD } from './show';
@@ -624,4 +625,22 @@ export function watchBursts(watch: BurstWatch, show: FireworksShow, run: Lantern
     if (b.lit === 0) misses.push(b);
   }
   return misses;
+}
+
+/** The storage key of the best stars per level: a JSON list, one entry a level of LEVELS, 1 to 3 stars or 0 (not yet lit). */
+export const STARS_KEY = 'bitphysics.fireworks.stars';
+
+/**
+ * The best stars of each level of LEVELS (0 to 3 a level, 0: not yet lit), kept under STARS_KEY in
+ * the page's storage (or `options.storage`); a stored entry that is not such a whole number, or
+ * missing, reads as 0.
+ */
+export function bestStarsStore(options?: StorageOptions): StoredValue<number[]> {
+  const perLevel = listCheck(numberCheck({ max: 3, integer: true }), LEVELS.length, 0);
+  return storedValue(
+    STARS_KEY,
+    perLevel,
+    LEVELS.map(() => 0),
+    options,
+  );
 }

@@ -74,6 +74,7 @@ import { Container, Graphics, Sprite, Text, Texture } from 'pixi.js';
 import { gaugeCentre } from './gauge';
 import {
   type BurstWatch,
+  bestStarsStore,
   clearShown,
   countShell,
   glowOf,
@@ -172,18 +173,10 @@ let level = numberParam('level', { default: 1, min: 1, max: LEVELS.length, integ
 let run: LanternRun = startLevel(level, 0);
 /** A lantern lit: where (m) and when (world time, s), for the ring that widens from it. */
 const lightings: { x: number; y: number; time: number; index: number }[] = [];
-const STARS_KEY = 'bitphysics.fireworks.stars';
-
-/** Best stars of each level kept in localStorage (0 for a level not yet lit). */
-function readStars(): number[] {
-  try {
-    const v = JSON.parse(localStorage.getItem(STARS_KEY) ?? '[]') as unknown;
-    return LEVELS.map((_, i) => (Array.isArray(v) && [1, 2, 3].includes(v[i] as number) ? (v[i] as number) : 0));
-  } catch {
-    return LEVELS.map(() => 0);
-  }
-}
-const bestStars = readStars();
+/** Where the best stars are kept (localStorage, ./lanterns.ts bestStarsStore). */
+const starsStore = bestStarsStore();
+/** Best stars of each level (0 for a level not yet lit). */
+const bestStars = starsStore.read();
 
 /** The lantern show's bursts being watched for what they light (a miss is said near its burst). */
 let watch: BurstWatch;
@@ -246,11 +239,7 @@ function stepShow(world: PhysicsWorld): void {
 function levelLit(): void {
   if (run.stars > bestStars[run.level]!) {
     bestStars[run.level] = run.stars;
-    try {
-      localStorage.setItem(STARS_KEY, JSON.stringify(bestStars));
-    } catch {
-      /* private mode: kept for this page only */
-    }
+    starsStore.write(bestStars);
   }
 }
 /** World time the level was first shown as lit (NaN until then), s. */

@@ -7,6 +7,7 @@
  * drawing), so it is tested in node (test/games/flight-simulator-course.test.ts).
  */
 
+import { numberCheck, type StorageOptions, type StoredRecord, shapeCheck, storedRecord } from '@bitphysics/game-kit';
 import { Rng } from '@bitphysics/physics';
 import { terrainHeight } from '@bitphysics/projects';
 import { ASSIST, assertMotion } from './assist';
@@ -640,6 +641,21 @@ export function predictThroughRing(
 export interface BestResult {
   passed: number;
   time: number;
+}
+
+/** The storage key of the best results: a JSON object of course key ('seed/rings') to its BestResult. */
+export const BEST_KEY = 'bitphysics.flight-simulator.best';
+/** The longest course time kept, s (11.6 days of flight): a longer one stored is garbage and reads as none. */
+export const MAX_BEST_TIME = 1e6;
+
+/**
+ * The best result of each course flown, kept under BEST_KEY in the page's storage (or
+ * `options.storage`): rings passed a whole number in [0, 1000], time in [0, MAX_BEST_TIME] s; an
+ * entry outside those, or not of that shape, reads as none.
+ */
+export function courseBests(options?: StorageOptions): StoredRecord<BestResult> {
+  const result = shapeCheck<BestResult>({ passed: numberCheck({ max: 1000, integer: true }), time: numberCheck({ max: MAX_BEST_TIME }) });
+  return storedRecord(BEST_KEY, result, options);
 }
 
 /**

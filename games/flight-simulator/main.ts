@@ -101,7 +101,9 @@ import { createAttitudeIndicator } from './attitude-indicator';
 import { courseTipText, LESSON_RINGS, markerBearing } from './coach';
 import { createCockpit } from './cockpit';
 import {
+  type BestResult,
   compareWithBest,
+  courseBests,
   courseStars,
   courseTime,
   faceRing,
@@ -111,6 +113,7 @@ import {
   layCourse,
   leaveBehind,
   lessonTipText,
+  MAX_BEST_TIME,
   MISS_PENALTY,
   nextRing,
   nextRingText,
@@ -688,15 +691,11 @@ function promisedRing(time: number): number {
   return promise.ring >= 0 && promise.ring === nextRing(rings) && time - promise.at <= PROMISE_TIME ? promise.ring : -1;
 }
 
-/** Best result of this course (seed and ring count) in localStorage: rings passed, then the shorter course time (misses' penalties in). */
-const BEST_KEY = 'bitphysics.flight-simulator.best';
-function bestOf(): { passed: number; time: number } | null {
-  try {
-    const all = JSON.parse(localStorage.getItem(BEST_KEY) ?? '{}') as Record<string, { passed: number; time: number }>;
-    return all[`${params.seed}/${params.rings}`] ?? null;
-  } catch {
-    return null;
-  }
+/** Best result of each course (seed and ring count) in localStorage (./course.ts courseBests): rings passed, then the shorter course time (misses' penalties in). */
+const bests = courseBests();
+/** The best result kept for this course, or null when none is. */
+function bestOf(): BestResult | null {
+  return bests.get(`${params.seed}/${params.rings}`) ?? null;
 }
 /** How the last finish compared with the course's best kept before it (./course.ts compareWithBest). */
 let lastVsBest: 'first' | 'better' | 'not' = 'not';
@@ -707,15 +706,8 @@ function finish(time: number): void {
   const total = courseTime(state.time, state.missed + state.again);
   lastVsBest = compareWithBest(best, state.score, total);
   // The first run is kept as the best to beat, but only a run that beats a kept best is praised.
-  if (lastVsBest !== 'not') {
-    try {
-      const all = JSON.parse(localStorage.getItem(BEST_KEY) ?? '{}') as Record<string, unknown>;
-      all[`${params.seed}/${params.rings}`] = { passed: state.score, time: total };
-      localStorage.setItem(BEST_KEY, JSON.stringify(all));
-    } catch {
-      /* storage refused: no best kept */
-    }
-  }
+  // A time past MAX_BEST_TIME would read back as none: not kept.
+  if (lastVsBest !== 'not' && total <= MAX_BEST_TIME) bests.set(`${params.seed}/${params.rings}`, { passed: state.score, time: total });
   events.push({ text: state.score === rings.length ? 'Course complete!' : 'Course over', colour: '#ffd166', time });
   const notes = [1047, 1319, 1568, 2093];
   for (let k = 0; k < notes.length; k++) setTimeout(() => sound.chime(notes[k], 0.35), 120 * k);

@@ -2,17 +2,16 @@
  * The cloth lab's progress, headless: the best stars won on each sheet, kept in the browser's storage
  * over a reload, and the stars a sheet needs to be passed. Storage may be missing (a locked-down
  * browser) or throw (private mode, a full quota, a blocked origin): then the progress lasts as long
- * as the page, and nothing fails.
+ * as the page, and nothing fails (the game kit's storedValue).
  */
+
+import { type KeyValueStorage, listCheck, numberCheck, pageStorage, type StoredValue, storedValue } from '@bitphysics/game-kit';
 
 /** The storage key of the best stars per sheet (a JSON array of integers, -1: not finished). */
 export const PROGRESS_KEY = 'bitphysics.lab-cloth.best';
 
-/** What the progress needs of a storage (the browser's localStorage). */
-export interface ProgressStore {
-  getItem(key: string): string | null;
-  setItem(key: string, value: string): void;
-}
+/** What the progress needs of a storage (the browser's localStorage): its getItem and setItem. */
+export type ProgressStore = KeyValueStorage;
 
 /**
  * Stars a sheet of `targets` targets needs to be passed, of 3 per target: two per target on average,
@@ -26,11 +25,18 @@ export function passMark(targets: number): number {
 
 /** The browser's localStorage, or null where there is none or reading it throws. */
 export function browserStore(): ProgressStore | null {
-  try {
-    return typeof localStorage === 'undefined' ? null : localStorage;
-  } catch {
-    return null;
-  }
+  return pageStorage();
+}
+
+/** The progress of `levels` sheets kept in `store` (none: null): each an integer in [-1, 99], -1 where missing or bad. */
+function progressIn(store: ProgressStore | null, levels: number): StoredValue<number[]> {
+  const perSheet = listCheck(numberCheck({ min: -1, max: 99, integer: true }), levels, -1);
+  return storedValue(
+    PROGRESS_KEY,
+    perSheet,
+    Array.from({ length: levels }, () => -1),
+    { storage: store },
+  );
 }
 
 /**
@@ -40,29 +46,13 @@ export function browserStore(): ProgressStore | null {
  */
 export function loadProgress(store: ProgressStore | null, levels: number): number[] {
   if (!(Number.isInteger(levels) && levels >= 1)) throw new RangeError(`loadProgress: levels must be an integer >= 1, got ${levels}`);
-  const out = Array.from({ length: levels }, () => -1);
-  let saved: unknown = null;
-  try {
-    const text = store?.getItem(PROGRESS_KEY);
-    saved = text ? JSON.parse(text) : null;
-  } catch {
-    return out;
-  }
-  if (!Array.isArray(saved)) return out;
-  for (let i = 0; i < levels; i++) {
-    const v = saved[i];
-    if (Number.isInteger(v) && v >= 0 && v <= 99) out[i] = v;
-  }
-  return out;
+  return progressIn(store, levels).read();
 }
 
-/** Saves the best stars per sheet `best` (as loadProgress returns them) in `store`. @returns whether it was saved. */
+/**
+ * Saves the best stars per sheet `best` (as loadProgress returns them) in `store`. @returns whether it was saved.
+ * @throws RangeError if an entry of `best` is not an integer in [-1, 99].
+ */
 export function saveProgress(store: ProgressStore | null, best: readonly number[]): boolean {
-  if (!store) return false;
-  try {
-    store.setItem(PROGRESS_KEY, JSON.stringify(best));
-    return true;
-  } catch {
-    return false;
-  }
+  return progressIn(store, best.length).write(best.slice());
 }

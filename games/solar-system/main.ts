@@ -125,9 +125,11 @@ import {
   hohmannSpeed,
   launchDirection,
   launchProbe,
+  MAX_KEPT_SCORE,
   MAX_SPEED,
   MISSIONS,
   type Mission,
+  missionProgress,
   missionScore,
   missionTimeStep,
   planFlight,
@@ -434,35 +436,12 @@ function launchWindow(): { next: number; period: number } {
 }
 /** The date a mission began, ms (the panel's restart goes back there). */
 let missionStartMs = startMs;
-const STARS_KEY = 'bitphysics.solar-system.stars';
-/** Best stars of each mission (0: not flown), kept in local storage. */
-const best: number[] = readBest();
-
-const SCORES_KEY = 'bitphysics.solar-system.scores';
-/** Best score of each mission (0: not won), kept in local storage (./missions.ts missionScore). */
-const bestScore: number[] = readScores();
-
-function readScores(): number[] {
-  try {
-    const v = JSON.parse(localStorage.getItem(SCORES_KEY) ?? '[]') as unknown;
-    if (Array.isArray(v)) return MISSIONS.map((_, i) => (Number.isInteger(v[i]) && v[i] >= 0 ? (v[i] as number) : 0));
-  } catch {
-    /* no storage or a bad entry: nothing won */
-  }
-  return MISSIONS.map(() => 0);
-}
-
-function readBest(): number[] {
-  try {
-    const v = JSON.parse(localStorage.getItem(STARS_KEY) ?? '[]') as unknown;
-    if (Array.isArray(v)) return MISSIONS.map((_, i) => (Number.isInteger(v[i]) && v[i] >= 0 && v[i] <= 3 ? (v[i] as number) : 0));
-  } catch {
-    /* no storage or a bad entry: nothing flown */
-  }
-  return MISSIONS.map(() => 0);
-}
-
-const LAST_KEY = 'bitphysics.solar-system.mission';
+/** The missions' stars, scores and last mission, kept in local storage (./missions.ts missionProgress). */
+const progress = missionProgress();
+/** Best stars of each mission (0: not flown). */
+const best: number[] = progress.stars.read();
+/** Best score of each mission (0: not won; ./missions.ts missionScore). */
+const bestScore: number[] = progress.scores.read();
 
 /**
  * The mission (0-based) a page opened without ?mission= resumes at: the last one started (kept in
@@ -470,13 +449,7 @@ const LAST_KEY = 'bitphysics.solar-system.mission';
  * first); the last one started when every mission has stars; the first with no storage.
  */
 function resumeMission(): number {
-  let last = 0;
-  try {
-    const v = Number(localStorage.getItem(LAST_KEY));
-    if (Number.isInteger(v) && v >= 0 && v < MISSIONS.length) last = v;
-  } catch {
-    /* no storage: the first mission */
-  }
+  const last = progress.last.read();
   if (best[last] === 0) return last;
   for (let k = 1; k < MISSIONS.length; k++) {
     const i = (last + k) % MISSIONS.length;
@@ -485,13 +458,10 @@ function resumeMission(): number {
   return last;
 }
 
+/** Keeps the best stars and scores (a score past MAX_KEPT_SCORE would read back as 0: the scores are then not kept). */
 function saveBest(): void {
-  try {
-    localStorage.setItem(STARS_KEY, JSON.stringify(best));
-    localStorage.setItem(SCORES_KEY, JSON.stringify(bestScore));
-  } catch {
-    /* private mode: this page only */
-  }
+  progress.stars.write(best);
+  if (bestScore.every((s) => s <= MAX_KEPT_SCORE)) progress.scores.write(bestScore);
 }
 
 const mission = (): Mission => MISSIONS[missionIndex]!;
@@ -515,11 +485,7 @@ function startMission(index: number): void {
   flight = null;
   missionIndex = Math.max(0, Math.min(MISSIONS.length - 1, index));
   params.mission = String(missionIndex + 1);
-  try {
-    localStorage.setItem(LAST_KEY, String(missionIndex));
-  } catch {
-    /* private mode: a reload starts at the first mission not flown */
-  }
+  progress.last.write(missionIndex);
   phase = 'aim';
   trailCount = 0;
   launches = 0;

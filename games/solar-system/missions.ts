@@ -29,6 +29,7 @@
  * player sees are km/s (`KM_S` AU/day each).
  */
 
+import { listCheck, numberCheck, type StorageOptions, type StoredValue, storedValue } from '@bitphysics/game-kit';
 import { addBody, enableMutualGravity, type PhysicsWorld, removeBody, setVelocity, slotOf } from '@bitphysics/physics';
 import { AU, DAY, type SolarSystemHandles, type SolarSystemPlanet, solarSystemMass } from '@bitphysics/projects';
 import { keplerState } from './kepler';
@@ -829,4 +830,37 @@ export function endFlight(world: PhysicsWorld, flight: Flight): void {
 export function hohmannSpeed(rEarth: number, rTarget: number, mu: number): number {
   const v = Math.sqrt(mu / rEarth);
   return (v * (Math.sqrt((2 * rTarget) / (rEarth + rTarget)) - 1)) / KM_S;
+}
+
+/** The storage key of the best stars per mission: a JSON list, one whole number 0 to 3 a mission of MISSIONS (0: not flown). */
+export const STARS_KEY = 'bitphysics.solar-system.stars';
+/** The storage key of the best score per mission: a JSON list, one whole number of points a mission (0: not won). */
+export const SCORES_KEY = 'bitphysics.solar-system.scores';
+/** The storage key of the last mission started: its index in MISSIONS (0-based), as a number's text. */
+export const LAST_MISSION_KEY = 'bitphysics.solar-system.mission';
+/** The highest mission score kept, points: far over any `missionScore` total, so a higher stored one is garbage. */
+export const MAX_KEPT_SCORE = 1e9;
+
+/** The missions' progress kept across reloads (`missionProgress`). */
+export interface MissionProgress {
+  /** Best stars of each mission, a whole number in [0, 3] (0: not flown). */
+  stars: StoredValue<number[]>;
+  /** Best score of each mission, whole points in [0, MAX_KEPT_SCORE] (0: not won). */
+  scores: StoredValue<number[]>;
+  /** The last mission started, an index in MISSIONS (0 where none is kept). */
+  last: StoredValue<number>;
+}
+
+/**
+ * The missions' progress in the page's storage (or `options.storage`), under STARS_KEY, SCORES_KEY
+ * and LAST_MISSION_KEY; a stored entry out of its range, or not a whole number, reads as 0.
+ */
+export function missionProgress(options?: StorageOptions): MissionProgress {
+  const n = MISSIONS.length;
+  const zeros = MISSIONS.map(() => 0);
+  return {
+    stars: storedValue(STARS_KEY, listCheck(numberCheck({ max: 3, integer: true }), n, 0), zeros, options),
+    scores: storedValue(SCORES_KEY, listCheck(numberCheck({ max: MAX_KEPT_SCORE, integer: true }), n, 0), zeros, options),
+    last: storedValue(LAST_MISSION_KEY, numberCheck({ max: n - 1, integer: true }), 0, options),
+  };
 }

@@ -7,6 +7,7 @@
  * Headless, tested in node (test/games/submarine-levels.test.ts).
  */
 
+import { numberCheck, type StorageOptions, type StoredRecord, storedRecord } from '@bitphysics/game-kit';
 import { MINE_GAP, MINE_LAYOUT, MINE_LEAD, MINE_PATH_CLEARANCE, MINE_WAY_CLEARANCE, type MineLayout } from './mines';
 
 /** A level's course. */
@@ -73,4 +74,17 @@ export function levelCourse(number: number, seed: number, beacons: number): { se
     throw new RangeError(`levelCourse: beacons must be an integer from 1 to ${MAX_BEACONS}, got ${beacons}`);
   const level = LEVELS[number - 1]!;
   return { seed: seed + level.seedOffset, beacons: Math.min(MAX_BEACONS, beacons + level.extraBeacons), mines: level.mines };
+}
+
+/** The storage key of the best times: a JSON object of course key (main.ts bestKey) to the best time won, s. */
+export const BEST_TIMES_KEY = 'bitphysics.submarine.best';
+/** The longest best time kept, s (11.6 days of play): a longer one stored is garbage and reads as none. */
+export const MAX_BEST_TIME = 1e6;
+
+/**
+ * The best time of each course won, s in [0, MAX_BEST_TIME], kept under BEST_TIMES_KEY in the page's
+ * storage (or `options.storage`); an entry outside that range, or not a number, reads as none.
+ */
+export function bestTimes(options?: StorageOptions): StoredRecord<number> {
+  return storedRecord(BEST_TIMES_KEY, numberCheck({ max: MAX_BEST_TIME }), options);
 }

@@ -56,7 +56,7 @@ import {
 import { drawBoat, HEADLIGHT, inHeadlight } from './boat-drawing';
 import { CURRENT_NOTE_LIFE, CURRENT_NOTE_SPEED, currentAt, currentMark, currentNote, drawCurrent, driftInCurrent } from './current';
 import { coastDistance, createHelmState, HELM, type HelmInput, keyHeaveShare, NO_INPUT, steer } from './helm';
-import { LEVELS, levelCourse, MAX_BEACONS } from './levels';
+import { bestTimes, LEVELS, levelCourse, MAX_BEACONS, MAX_BEST_TIME } from './levels';
 import {
   hullDistance,
   layMines,
@@ -989,15 +989,11 @@ const showAgain = createActionButton('Play again ▶', () => {
   shell.reset();
   shell.paused = false;
 });
-/** Best time of each course (seed and beacon count) that was won, s, in localStorage. */
-const BEST_KEY = 'bitphysics.submarine.best';
+/** Best time of each course (seed and beacon count) that was won, s, in localStorage (./levels.ts bestTimes). */
+const bests = bestTimes();
+/** The best time of this course, s, or null when none is kept. */
 function bestTime(): number | null {
-  try {
-    const all = JSON.parse(localStorage.getItem(BEST_KEY) ?? '{}') as Record<string, number>;
-    return all[bestKey()] ?? null;
-  } catch {
-    return null;
-  }
+  return bests.get(bestKey()) ?? null;
 }
 /** The course's key in the best times: the seed and beacon count, and the level from level 2 on. */
 function bestKey(): string {
@@ -1016,13 +1012,8 @@ function recordWin(time: number): void {
   firstWin = best === null;
   beaten = newBest && best !== null ? best : Number.NaN;
   if (best !== null && !newBest) return;
-  try {
-    const all = JSON.parse(localStorage.getItem(BEST_KEY) ?? '{}') as Record<string, number>;
-    all[bestKey()] = time;
-    localStorage.setItem(BEST_KEY, JSON.stringify(all));
-  } catch {
-    /* storage refused: no best kept */
-  }
+  // A time past MAX_BEST_TIME would read back as none: not kept.
+  if (time <= MAX_BEST_TIME) bests.set(bestKey(), time);
 }
 /** m:ss of `t` seconds. */
 function clock(t: number): string {

@@ -2,8 +2,8 @@
  * The renderer-agnostic game shell every game reuses: the page contract (`window.game`, ready
  * flag), the fixed-step loop on requestAnimationFrame, keys (P pause, N step, R reset), the HUD
  * (fps, a physics fold with bodies and steps, controls legend), the page layout (toolbar, info and side columns around the scene),
- * lil-gui panels, URL parameters, pointer positions, a game's status row (goal, numbers, hint) and
- * the DOM result card at a round's end.
+ * lil-gui panels, URL parameters, pointer positions, a game's status row (goal, numbers, hint),
+ * the DOM result card at a round's end and saved values (best scores) checked on read.
  * The pixi part lives in './pixi' (createPixiApp, startPixiGame) so 3D games need not load pixi.
  */
 
@@ -45,5 +45,15 @@ export type { EngineSound, Sound, SoundMaterial } from './sound.js';
 export { addMuteButton, getSound } from './sound.js';
 export type { StatusLines, StatusRow, StatusRowOptions } from './status-row.js';
 export { createStatusRow } from './status-row.js';
+export type { KeyValueStorage, StorageOptions, StoredCheck, StoredRecord, StoredValue } from './storage.js';
+/**
+ * Saved values kept in localStorage across reloads, as JSON under a namespaced key ('my-game.best'),
+ * checked on read so a garbled or out-of-range entry reads as the fallback: `storedValue(key, check,
+ * fallback)` (read, write), `storedRecord(key, entryCheck)` (read, get, set: one entry per course),
+ * the checks `numberCheck({ min, max, integer })`, `listCheck(item, length, fill)` and
+ * `shapeCheck(fields)`, and `pageStorage()`. Missing or throwing storage (Node, private modes, a full
+ * quota) costs only the keeping; only a bad key, range or written value throws.
+ */
+export { listCheck, numberCheck, pageStorage, shapeCheck, storedRecord, storedValue } from './storage.js';
 export type { ActionButtonOptions, ButtonBar, ButtonBarOptions, Stick, StickOptions, TouchButton } from './touch-controls.js';
 export { createActionButton, createButtonBar, createStick, isTouchDevice } from './touch-controls.js';

@@ -6,6 +6,8 @@
  * a no-op. Muting is remembered in localStorage ('bitphysics.muted') for every page. DOM only.
  */
 
+import { numberCheck, storedValue } from './storage.js';
+
 /** Materials whose impacts sound different (pitch and brightness). */
 export type SoundMaterial = 'wood' | 'stone' | 'glass' | 'metal' | 'soft';
 
@@ -46,7 +48,8 @@ export interface Sound {
   engine(kind: 'propeller' | 'screw'): EngineSound;
 }
 
-const MUTE_KEY = 'bitphysics.muted';
+/** Whether sound is muted, kept for every page: 1 (muted) or 0, as a number's text; anything else reads as 0. */
+const mutedStore = storedValue('bitphysics.muted', numberCheck({ max: 1, integer: true }), 0);
 
 /** Impact timbre per material: base frequency Hz, decay s, noise share, filter Q. */
 const MATERIALS: Record<SoundMaterial, { f: number; decay: number; noise: number; q: number }> = {
@@ -58,11 +61,7 @@ const MATERIALS: Record<SoundMaterial, { f: number; decay: number; noise: number
 };
 
 function readMuted(): boolean {
-  try {
-    return localStorage.getItem(MUTE_KEY) === '1';
-  } catch {
-    return false;
-  }
+  return mutedStore.read() === 1;
 }
 
 let sound: Sound | null = null;
@@ -173,11 +172,7 @@ export function getSound(): Sound {
     },
     set muted(value: boolean) {
       muted = value === true;
-      try {
-        localStorage.setItem(MUTE_KEY, muted ? '1' : '0');
-      } catch {
-        /* private mode: this page only */
-      }
+      mutedStore.write(muted ? 1 : 0);
       if (ctx && master) master.gain.setTargetAtTime(muted ? 0 : 0.8, ctx.currentTime, 0.02);
     },
     get running() {
