@@ -756,9 +756,10 @@ const cameraVelocity = new Vector3(),
   targetVelocity = new Vector3();
 /**
  * The widened framing: whether the camera is given it rather than the site's (for the rest of the
- * level once it is), the ball's places it takes in (m) and when it was last widened (page seconds).
+ * level once it is), the ball's places it takes in (m), when it was last widened (page seconds) and
+ * how many times it widened for a piece knocked off the screen (`lostPiece`).
  */
-const widen = { on: false, balls: [] as Vector3[], at: -1e9 };
+const widen = { on: false, balls: [] as Vector3[], at: -1e9, wreckage: 0 };
 // The player's own turn or zoom: the camera is theirs (no new framing on a resize, no easing back).
 app.controls?.addEventListener('start', () => {
   framedSize = null;
@@ -1171,6 +1172,7 @@ function settleCamera(): void {
   targetVelocity.set(0, 0, 0);
   widen.on = false;
   widen.balls.length = 0;
+  widen.wreckage = 0;
   if (home !== null) {
     cameraGoal.position.copy(home.position);
     cameraGoal.target.copy(home.target);
@@ -1311,6 +1313,7 @@ function followAction(): void {
       lostPiece(widen.on ? cameraGoal.position : app.camera.position, widen.on ? cameraGoal.target : controls.target)
     ) {
       widen.on = true;
+      widen.wreckage++;
       widenFor(lostAt, now);
     }
     if (!widen.on) {
@@ -2925,6 +2928,8 @@ shell.expose({
   settling: () => ({ reached: reachedAt >= 0, falling, cleared }),
   /** Whether a fallen piece within the site lies off the screen now (see lostPiece). */
   pieceOffScreen: (): boolean => app.controls !== null && lostPiece(app.camera.position, app.controls.target),
+  /** How many times this level's framing widened to take in a piece knocked off the screen. */
+  wreckageWidenings: (): number => widen.wreckage,
   /** Goes to the next level (banks the score). */
   nextLevel,
   /** The drawing quality now ('full' or 'lite'; see Quality). */

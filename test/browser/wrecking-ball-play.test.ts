@@ -114,7 +114,16 @@ describe('wrecking ball: a stranger can swing at every target and sees the wreck
       return null;
     });
     expect(put).not.toBeNull();
-    await g.runFrames(150);
+    // The camera eases to the widened framing over the page's own frames (its spring runs on page
+    // time): wait, bounded, for the piece to be drawn on the screen, else report where it is.
+    await g.runFrames(60);
+    const onScreen = (body: number) => {
+      const game = window.game as unknown as WB;
+      const P = game.world.components.Position;
+      const s = game.app.camera.position.clone().set(P.x[body]!, P.y[body]!, P.z[body]!).project(game.app.camera);
+      return Math.abs(s.x) < 1 && Math.abs(s.y) < 1;
+    };
+    await g.waitFor(onScreen, put!.body, 30_000).catch(() => false);
     const drawn = await g.page.evaluate((body) => {
       const game = window.game as unknown as WB;
       const P = game.world.components.Position;
