@@ -77,8 +77,8 @@ describe('wrecking ball: a stranger can swing at every target and sees the wreck
     console.log(
       `level 3 on a phone: ${result.n} pieces pressed; nearest a screen edge ${result.room.toFixed(0)} px; weakest swing a drag to that edge gives ${result.worst.toFixed(2)}`,
     );
-    // Before: a piece 15 px from the edge (level 3's tall tower at the left) gave 0.2 of full power
-    // (110 px of pull asked, the edge 15 px away). Every piece pressed gives full power now.
+    // Before: the nearest piece 31 px from the edge, and a drag to the edge gave 0.28 of full power
+    // (110 px of pull asked). Now: the nearest 45 px from it (FRAME_X), and every piece gives full power.
     expect(result.n).toBeGreaterThan(30);
     expect(result.worst).toBe(1);
     expect(g.errors).toEqual([]);
