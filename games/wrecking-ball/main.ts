@@ -106,7 +106,9 @@ import {
   SHIELD_HALF,
   type SwingRequest,
   scorePieces,
+  settleOver,
   starsRule,
+  stillFalling,
   swayAmplitude,
   swingBudget,
   swingPar,
@@ -211,7 +213,8 @@ function createWorld(): PhysicsWorld {
   });
   levelScore = 0;
   cleared = false;
-  reachedAt = -1;
+  reachedAt = firstReachedAt = -1;
+  falling = movingAt = 0;
   clearedWith.tapped = false;
   return world;
 }
@@ -253,15 +256,21 @@ function gameStep(world: PhysicsWorld): void {
     if (!cleared) levelScore += gained;
     if (reachedAt >= 0) reachedAt = world.time;
   }
+  falling = stillFalling(world, handles.pieces);
+  if (falling > 0) movingAt = world.time;
   const target = clearTarget(handles.pieces, handles.level);
   if (!cleared && reachedAt < 0 && clearReached(fallenCount(handles.pieces), target, pulling())) {
-    reachedAt = world.time;
+    reachedAt = firstReachedAt = world.time;
     reachedWith = swingsUsed();
   }
-  // The result is given (and fixed) once the collapse that cleared the level has settled (no piece
-  // fell for CLEAR_SETTLE s) or the next swing is let go: given at once, its score went on rising
-  // under the banner as the last pieces fell.
-  if (!cleared && reachedAt >= 0 && (world.time - reachedAt >= CLEAR_SETTLE || swingsUsed() > reachedWith)) {
+  // The result is given (and fixed) once the collapse that cleared the level has settled (./scene
+  // settleOver: nothing fell for a second and nothing still moves) or the next swing is let go: given
+  // when the count was reached, the end card covered the collapse still going on.
+  if (
+    !cleared &&
+    reachedAt >= 0 &&
+    (settleOver(world.time - reachedAt, world.time - movingAt, world.time - firstReachedAt) || swingsUsed() > reachedWith)
+  ) {
     cleared = true;
     clearedWith.swings = reachedWith;
     clearedWith.stars = swingStars(clearedWith.swings, true, handles.level);
@@ -276,11 +285,14 @@ function pulling(): boolean {
   const k = handles.controls;
   return k.pull !== null || (k.moves[0]?.release === true && k.moves[0].elapsed === 0);
 }
-/** Seconds with no piece falling after the clear target is reached before the result is given. */
-const CLEAR_SETTLE = 1;
 /** World time the clear target was reached or a piece last fell after it (-1: not reached), and the swings used then. */
 let reachedAt = -1;
 let reachedWith = 0;
+/** World time the clear target was first reached (the settling's start). */
+let firstReachedAt = -1;
+/** Pieces still falling at the last step (./scene stillFalling), and the world time one last was. */
+let falling = 0;
+let movingAt = 0;
 
 const sound = getSound();
 
@@ -504,7 +516,7 @@ let framedSize: [number, number] | null = null;
  * The screen a framing may fill, in normalised device coordinates: x from -FRAME_X to FRAME_X, y
  * from FRAME_BOTTOM to FRAME_TOP (the hint over the scene's top keeps the pieces from it).
  */
-const FRAME_X = 0.94,
+const FRAME_X = touch && PORTRAIT ? 0.86 : 0.94,
   FRAME_BOTTOM = -0.92,
   FRAME_TOP = PORTRAIT ? 0.78 : 0.84;
 /** Elevations, rad, of the views `frameSite` tries (from 15 to 35 degrees over the ground). */
@@ -744,9 +756,10 @@ const cameraVelocity = new Vector3(),
   targetVelocity = new Vector3();
 /**
  * The widened framing: whether the camera is given it rather than the site's (for the rest of the
- * level once it is), the ball's places it takes in (m) and when it was last widened (page seconds).
+ * level once it is), the ball's places it takes in (m), when it was last widened (page seconds) and
+ * how many times it widened for a piece knocked off the screen (`lostPiece`).
  */
-const widen = { on: false, balls: [] as Vector3[], at: -1e9 };
+const widen = { on: false, balls: [] as Vector3[], at: -1e9, wreckage: 0 };
 // The player's own turn or zoom: the camera is theirs (no new framing on a resize, no easing back).
 app.controls?.addEventListener('start', () => {
   framedSize = null;
@@ -1068,8 +1081,8 @@ function drawTagline(): void {
   const pull = handles.controls.pull;
   tagline.visible = pull !== null && pull.offset > 0;
   if (!tagline.visible || pull === null) return;
-  taglineFrom.set(ballAt[0]! - BALL_RADIUS * pull.ux, ballAt[1]!, ballAt[2]! - BALL_RADIUS * pull.uz);
-  taglineTo.set(ballAt[0]! - TAGLINE_BACK * pull.ux, 0, ballAt[2]! - TAGLINE_BACK * pull.uz);
+  taglineFrom.set(ballAt[0]! - BALL_RADIUS * pull.dx, ballAt[1]!, ballAt[2]! - BALL_RADIUS * pull.dz);
+  taglineTo.set(ballAt[0]! - TAGLINE_BACK * pull.dx, 0, ballAt[2]! - TAGLINE_BACK * pull.dz);
   chainDir.subVectors(taglineTo, taglineFrom);
   const length = chainDir.length();
   tagline.position.addVectors(taglineFrom, taglineTo).multiplyScalar(0.5);
@@ -1159,6 +1172,7 @@ function settleCamera(): void {
   targetVelocity.set(0, 0, 0);
   widen.on = false;
   widen.balls.length = 0;
+  widen.wreckage = 0;
   if (home !== null) {
     cameraGoal.position.copy(home.position);
     cameraGoal.target.copy(home.target);
@@ -1233,6 +1247,26 @@ function widenFor(ball: ArrayLike<number>, now: number): void {
   const far = cameraGoal.position.distanceTo(cameraGoal.target);
   if (app.controls !== null && far > app.controls.maxDistance) app.controls.maxDistance = far * 1.05;
 }
+/** Farthest from the mast, m, a fallen piece may lie for the framing to widen to it (the site's ground is 30 m across). */
+const SITE_REACH = 14;
+/** Where the piece `lostPiece` found lies, m. */
+const lostAt = [0, 0, 0];
+/**
+ * Whether a fallen piece lies off the screen (its centre outside the view from `position` looking at
+ * `target`: the camera's, or the widened framing it eases to), within SITE_REACH of the mast: its
+ * centre is put in `lostAt`.
+ */
+function lostPiece(position: Vector3, target: Vector3): boolean {
+  const P = shell.world.components.Position;
+  for (const p of handles.pieces) {
+    if (!p.fallen || !isAlive(shell.world, p.body)) continue;
+    lostAt[0] = P.x[p.body]!;
+    lostAt[1] = P.y[p.body]!;
+    lostAt[2] = P.z[p.body]!;
+    if (Math.hypot(lostAt[0], lostAt[2]) < SITE_REACH && !inFraming(lostAt, position, target, true)) return true;
+  }
+  return false;
+}
 /** Eases the camera and its orbit target toward the framing of the site and the ball, or after the ball (see FOLLOW_EDGE). */
 function followAction(): void {
   const controls = app.controls;
@@ -1271,6 +1305,16 @@ function followAction(): void {
     } else if (!inside) {
       widen.on = true;
       widenFor(followBall, now);
+    }
+    // A piece knocked off the screen: the framing widens to take in where it lies (the player sees
+    // what the swing did; wreckage flying out of the view looked to vanish).
+    if (
+      now - widen.at > WIDEN_EVERY &&
+      lostPiece(widen.on ? cameraGoal.position : app.camera.position, widen.on ? cameraGoal.target : controls.target)
+    ) {
+      widen.on = true;
+      widen.wreckage++;
+      widenFor(lostAt, now);
     }
     if (!widen.on) {
       cameraGoal.position.copy(home.position);
@@ -1652,6 +1696,26 @@ const MIN_POWER = 0.2;
  * swings without a long wind-up.
  */
 const TAP_POWER = 1;
+/** Fewest CSS px of pull for a full-power swing, where the screen's edge leaves less than FULL_PULL_PX (see fullPull). */
+const LEAST_FULL_PULL_PX = 24;
+/** CSS px short of the screen's edge at which a pull toward it is full (a finger cannot reach the very edge). */
+const EDGE_PX = 6;
+/**
+ * CSS px of pull for a full-power swing along the screen direction (ux, uy) (unit, y up) from the
+ * press being aimed: FULL_PULL_PX, or as far as the screen's edge lets the pull go that way (less
+ * EDGE_PX; at least LEAST_FULL_PULL_PX), so a target near the edge of a phone's screen can be given
+ * a full swing from any side.
+ */
+function fullPull(ux: number, uy: number): number {
+  const w = canvas.clientWidth,
+    h = canvas.clientHeight;
+  const sx = ((aiming.x0 + 1) / 2) * w,
+    sy = ((1 - aiming.y0) / 2) * h;
+  // Down the screen is -uy.
+  const tx = ux > 1e-6 ? (w - sx) / ux : ux < -1e-6 ? -sx / ux : Number.POSITIVE_INFINITY;
+  const ty = uy > 1e-6 ? sy / uy : uy < -1e-6 ? (h - sy) / -uy : Number.POSITIVE_INFINITY;
+  return Math.min(FULL_PULL_PX, Math.max(LEAST_FULL_PULL_PX, Math.min(tx, ty) - EDGE_PX));
+}
 /** The swing the arrow shows now, for ./scene aimAt. */
 function request(): SwingRequest {
   return { direction: aiming.direction, speed: swingSpeed(aiming.power) };
@@ -1696,7 +1760,7 @@ function aimDrag(ndcX: number, ndcY: number): void {
     fromZ = aiming.remote ? aiming.gz : tz;
   if (raycaster.ray.intersectPlane(ground, groundHit) !== null && Math.hypot(groundHit.x - fromX, groundHit.z - fromZ) > 0.2)
     aiming.direction = Math.atan2(fromZ - groundHit.z, fromX - groundHit.x);
-  aiming.power = Math.min(1, Math.max(MIN_POWER, pull / FULL_PULL_PX));
+  aiming.power = Math.min(1, Math.max(MIN_POWER, pull / fullPull(px / pull, py / pull)));
   // While the drag is held the crane takes the hook over the piece and a tagline draws the ball
   // back as the arrow shows, so letting go swings it from there (./scene pullBack): the hit comes
   // about a quarter of the chain's swing after the finger lifts. Not while the ball is on its run
@@ -2544,7 +2608,9 @@ function hintText(): string {
   if (aiming.piece !== 0 && aiming.dragged)
     return `Let go to swing along the arrow: ${pullWords()}${aiming.power >= FULL_POWER_SHOWN ? '' : ', pull longer for more'}`;
   if (shell.world.time < notice.until) return notice.text;
-  if (reachedAt >= 0) return '';
+  // Settling: the count goes on as the wreckage comes down; the end card waits for it.
+  if (reachedAt >= 0)
+    return `Target reached! ${fallenCount(handles.pieces)} down${falling > 0 ? ` · settling: ${falling} still moving` : ' · settled'}`;
   if (outOfSwings()) return '';
   if (aiming.armed !== 0)
     return touch
@@ -2708,7 +2774,7 @@ function frame(): void {
     status.textContent = cleared
       ? `${clearedLine()} · final score ${banked + levelScore} · ${touch ? 'tap' : 'press L or'} Next level`
       : reachedAt >= 0
-        ? `Level ${handles.level} · target reached! · down ${f}/${n} · score ${banked + levelScore} (counting the fall)`
+        ? `Level ${handles.level} · target reached! · down ${f}/${n} · score ${banked + levelScore} (counting the fall${falling > 0 ? `: ${falling} still moving` : ''})`
         : `Level ${handles.level} · swings left ${left}/${budget} (★★★ in ${swingPar(handles.level)}) · down ${f}/${n} (clear at ${clearTarget(handles.pieces, handles.level)})${swingPhase()}${
             swing.result && shell.world.time - swing.resultAt < RESULT_SHOWN ? ` · ${swing.result}` : ''
           }${left <= 0 && handles.controls.moves.length === 0 ? ` · out of swings: ${touch ? 'tap ↻' : 'press R'} to retry` : ''}${swayHint()}`;
@@ -2858,6 +2924,12 @@ shell.expose({
   popup: (x: number, y: number, z: number, text: string): void => effects.popup(x, y, z, text),
   /** The visible popups' label boxes on the screen (see SiteEffects.popupBoxes). */
   popupBoxes: () => effects.popupBoxes(),
+  /** The level's end: whether the clear target is reached (settling or cleared) and how many pieces still move (./scene stillFalling). */
+  settling: () => ({ reached: reachedAt >= 0, falling, cleared }),
+  /** Whether a fallen piece within the site lies off the screen now (see lostPiece). */
+  pieceOffScreen: (): boolean => app.controls !== null && lostPiece(app.camera.position, app.controls.target),
+  /** How many times this level's framing widened to take in a piece knocked off the screen. */
+  wreckageWidenings: (): number => widen.wreckage,
   /** Goes to the next level (banks the score). */
   nextLevel,
   /** The drawing quality now ('full' or 'lite'; see Quality). */

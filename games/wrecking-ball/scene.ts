@@ -1199,6 +1199,14 @@ export interface PullBack {
   uz: number;
   /** How far across the ground, m, the line draws the ball back from under the hook (0: paying out, no swing). */
   offset: number;
+  /**
+   * The way the line draws the ball now, unit vector (x, z): the ball is held `offset` back from
+   * under the hook against it. It turns toward (ux, uz) at DRAW_TURN rad/s at most, so a drag swept
+   * round carries the ball round the hook at the line's length, not straight across through the
+   * structure beneath; the line slips only once it is (ux, uz).
+   */
+  dx: number;
+  dz: number;
   /** Whether the player let go: the line slips as soon as the hook and the ball are in place (`pullReady`). */
   letGo: boolean;
   /** Seconds since the player let go with the hook in place (see PULL_WAIT). */
@@ -1273,7 +1281,9 @@ export function pullBack(world: PhysicsWorld, h: WreckingBallHandles, piece: num
   const [followX, followZ] = followEnd(world, structure, x, z, tx, tz, d);
   const old = h.controls.pull;
   const again = old !== null && old.offset > 0 && (old.letGo || old.again);
-  h.controls.pull = { piece, x, z, height, ux, uz, offset, letGo: false, waited: 0, again, followX, followZ };
+  const dx = old === null ? ux : old.dx,
+    dz = old === null ? uz : old.dz;
+  h.controls.pull = { piece, x, z, height, ux, uz, offset, dx, dz, letGo: false, waited: 0, again, followX, followZ };
   h.controls.moves = [];
   h.controls.swing = null;
   h.controls.goal = null;
@@ -1342,14 +1352,15 @@ function pullStep(world: PhysicsWorld, h: WreckingBallHandles, pull: PullBack, d
   // strike's height over the last PULL_LOWER m; never lower than keeps the ball over every piece
   // between where it is and where it goes (its next stop: under the goal, or drawn back from it).
   const far = Math.hypot(hx - gx, hz - gz) > PULL_LOWER;
-  const to = far ? [gx, gz] : [gx - pull.offset * pull.ux, gz - pull.offset * pull.uz];
+  const to = far ? [gx, gz] : [gx - pull.offset * pull.dx, gz - pull.offset * pull.dz];
   const over = carryHeight(world, h.pieces, P.x[b]!, P.z[b]!, to[0]!, to[1]!, far ? CARRY_SIDE : CARRY_NEAR_SIDE);
   const want = Math.max(far ? Math.max(pull.height, CRUISE_HEIGHT) : pull.height, over);
   // In place at the height that keeps the ball clear (the strike's, or over a piece beside the
   // drawn-back ball: the swing then goes from there).
   const inPlace = Math.hypot(hx - gx, hz - gz) < 0.05 && Math.abs(c.height - want) < 0.1;
   const atStrike = Math.abs(c.height - pull.height) < 0.1;
-  if (pull.letGo && inPlace) pull.waited += dt;
+  // The wait counts once the line draws the ball the way the swing goes (see turnDraw).
+  if (pull.letGo && inPlace && pull.dx * pull.ux + pull.dz * pull.uz > DRAWN_COS) pull.waited += dt;
   if (pull.letGo && inPlace && ((atStrike && (pullReady(world, h, pull, want) || pull.waited > PULL_WAIT)) || pull.waited > PULL_STUCK)) {
     h.controls.pull = null;
     if (pull.offset === 0) return;
@@ -1371,10 +1382,22 @@ function pullStep(world: PhysicsWorld, h: WreckingBallHandles, pull: PullBack, d
   // Slew and trolley each on a braking profile (speeding up at PULL_HOOK_ACCEL, slowing to stop at
   // the goal), the slew's rates those of the hook across the ground at its radius; braking to a
   // stop while the hook is too low to carry the ball over what lies ahead.
+  // A way across that passes over a structure too tall to carry the ball over (a tall tower's top
+  // above the ball at the hook's highest) goes round it: the trolley runs in toward the mast, the jib
+  // slews only once its arc at that radius is clear, and the trolley runs out under the goal.
   const r = Math.max(RADIUS_RANGE[0], c.radius);
   const low = c.height < over - CARRY_SLACK;
-  h.drive.slew = closeOn(h.drive.slew, low ? 0 : wrap(Math.atan2(-pull.z, pull.x) - c.angle), PULL_HOOK_SPEED / r, PULL_HOOK_ACCEL / r, dt);
-  h.drive.trolley = closeOn(h.drive.trolley, low ? 0 : Math.hypot(pull.x, pull.z) - c.radius, PULL_HOOK_SPEED, PULL_HOOK_ACCEL, dt);
+  const goalAngle = Math.atan2(-pull.z, pull.x),
+    goalRadius = Math.hypot(pull.x, pull.z);
+  const turn = wrap(goalAngle - c.angle);
+  let slewTo = turn,
+    runTo = goalRadius - c.radius;
+  if (far && Math.abs(turn) > TUCK_TURN && sweepBlocked(world, h.pieces, c.angle, c.radius, goalAngle, goalRadius)) {
+    runTo = RADIUS_RANGE[0] - c.radius;
+    if (sweepBlocked(world, h.pieces, c.angle, c.radius, goalAngle, c.radius)) slewTo = 0;
+  }
+  h.drive.slew = closeOn(h.drive.slew, low ? 0 : slewTo, PULL_HOOK_SPEED / r, PULL_HOOK_ACCEL / r, dt);
+  h.drive.trolley = closeOn(h.drive.trolley, low ? 0 : runTo, PULL_HOOK_SPEED, PULL_HOOK_ACCEL, dt);
   const lift = Math.max(-PULL_HOIST_SPEED * dt, Math.min(PULL_HOIST_SPEED * dt, want - c.height));
   c.angle = wrap(c.angle + h.drive.slew * dt);
   c.radius = Math.min(RADIUS_RANGE[1], Math.max(RADIUS_RANGE[0], c.radius + h.drive.trolley * dt));
@@ -1386,21 +1409,71 @@ function pullStep(world: PhysicsWorld, h: WreckingBallHandles, pull: PullBack, d
   // On its way the line holds the ball under the hook (drawn back, it swung wide and through what it
   // passed); over the last PULL_LOWER m it draws it back.
   const drawn = far ? 0 : pull.offset;
-  const ex = P.x[b]! - (nx - drawn * pull.ux),
-    ez = P.z[b]! - (nz - drawn * pull.uz);
+  // With the hook too low to carry the ball over what lies on its way to where it is drawn, the line
+  // holds the ball where it is (it is drawn on as the hook rises).
+  if (!low) turnDraw(pull, far, gx - hx, gz - hz, dt);
+  const ex = low && !far ? 0 : P.x[b]! - (nx - drawn * pull.dx),
+    ez = low && !far ? 0 : P.z[b]! - (nz - drawn * pull.dz);
   const w = 2 * Math.PI * PULL_HERTZ;
   // The chain's pull toward under the hook at the drawn angle, g d / sqrt(L^2 - d^2), made up.
   const hold = (9.81 * drawn) / Math.sqrt(HANG * HANG - drawn * drawn);
-  let ax = -w * w * ex - 2 * w * (V.x[b]! - (nx - hx) / dt) - hold * pull.ux,
-    az = -w * w * ez - 2 * w * (V.z[b]! - (nz - hz) / dt) - hold * pull.uz;
+  let ax = -w * w * ex - 2 * w * (V.x[b]! - (nx - hx) / dt) - hold * pull.dx,
+    az = -w * w * ez - 2 * w * (V.z[b]! - (nz - hz) / dt) - hold * pull.dz;
   const a = Math.hypot(ax, az);
   if (a > PULL_ACCEL) {
     ax *= PULL_ACCEL / a;
     az *= PULL_ACCEL / a;
   }
+  // The line's brake: the ball never runs faster than HELD_SPEED across the ground past the hook,
+  // so one still swinging from the hook's run is caught before it reaches a piece.
+  const rx = V.x[b]! - (nx - hx) / dt,
+    rz = V.z[b]! - (nz - hz) / dt,
+    rv = Math.hypot(rx, rz);
+  if (rv > HELD_SPEED) {
+    const brake = Math.min(HELD_BRAKE, (rv - HELD_SPEED) / dt) / rv;
+    ax -= brake * rx;
+    az -= brake * rz;
+  }
   const m = 1 / M.inv[b]!;
   F.x[b] = F.x[b]! + m * ax;
   F.z[b] = F.z[b]! + m * az;
+}
+
+/** Fastest, m/s, the tagline lets the ball run across the ground past the hook (see pullStep). */
+const HELD_SPEED = 4;
+/** Largest deceleration, m/s^2, with which the tagline brakes a ball running faster than HELD_SPEED. */
+const HELD_BRAKE = 30;
+
+/**
+ * Fastest the way the line draws the ball turns about the hook, rad/s (see PullBack.dx): the drawn
+ * ball then runs round at most 4 m/s at the line's full length (HELD_SPEED), within what the line's pull
+ * (PULL_ACCEL) holds on that circle.
+ */
+const DRAW_TURN = 1.2;
+/** The same once the player has let go (the swing is on its way; nothing is being aimed past the structure). */
+const DRAW_TURN_LET_GO = 2.4;
+/** Cosine of the angle within which the line draws the ball the swing's way (about 8 degrees): the line may slip. */
+const DRAWN_COS = 0.99;
+
+/**
+ * Turns the way the line draws the ball (`pull.dx`, `dz`) over `dt` s: while the hook carries the
+ * ball under it (`far`), along the hook's way to its goal (gx, gz from the hook, m), so the ball is
+ * drawn back from where it trails the hook when the hook comes near; else toward (ux, uz) by
+ * DRAW_TURN dt at most (DRAW_TURN_LET_GO once let go).
+ */
+function turnDraw(pull: PullBack, far: boolean, gx: number, gz: number, dt: number): void {
+  const g = Math.hypot(gx, gz);
+  if (far && g > 1e-6) {
+    pull.dx = gx / g;
+    pull.dz = gz / g;
+    return;
+  }
+  const now = Math.atan2(pull.dz, pull.dx),
+    turn = wrap(Math.atan2(pull.uz, pull.ux) - now);
+  const most = (pull.letGo ? DRAW_TURN_LET_GO : DRAW_TURN) * dt;
+  const a = now + Math.max(-most, Math.min(most, turn));
+  pull.dx = Math.cos(a);
+  pull.dz = Math.sin(a);
 }
 
 /** Rate, m/s, the hook is raised and lowered while the tagline holds the ball (twice HOIST_SPEED: it lifts the ball over the pieces on its way without holding the run up long). */
@@ -1413,6 +1486,33 @@ const CARRY_SIDE = 1;
 const CARRY_NEAR_SIDE = 0.2;
 /** How far, m, the hook may be below the height that carries the ball over what lies ahead and still run on (it rises as it goes). */
 const CARRY_SLACK = 0.5;
+
+/** Slew left, rad, under which the hook runs straight to its goal without going round (the way is then mostly in and out along the jib). */
+const TUCK_TURN = 0.15;
+/** Points along the hook's way at which `sweepBlocked` looks for a structure too tall to carry the ball over. */
+const SWEEP_SAMPLES = 16;
+
+/**
+ * Whether the hook's way from slew angle a0 at radius r0 to a1 at r1 (both rates at once, as the
+ * crane drives: a spiral about the mast) passes within the ball's radius and CARRY_SIDE of a standing
+ * piece whose top the ball cannot clear by CARRY_CLEAR even with the hook at its highest (HOOK_RANGE[1]).
+ */
+function sweepBlocked(world: PhysicsWorld, pieces: Piece[], a0: number, r0: number, a1: number, r1: number): boolean {
+  const P = world.components.Position;
+  const reachTop = HOOK_RANGE[1] - HANG - BALL_RADIUS - CARRY_CLEAR;
+  const turn = wrap(a1 - a0);
+  for (const q of pieces) {
+    if (q.fallen || P.y[q.body]! + q.half[1] <= reachTop) continue;
+    const near = Math.hypot(q.half[0], q.half[2]) + BALL_RADIUS + CARRY_SIDE;
+    for (let i = 0; i <= SWEEP_SAMPLES; i++) {
+      const f = i / SWEEP_SAMPLES,
+        a = a0 + f * turn,
+        r = r0 + f * (r1 - r0);
+      if (Math.hypot(r * Math.cos(a) - P.x[q.body]!, -r * Math.sin(a) - P.z[q.body]!) < near) return true;
+    }
+  }
+  return false;
+}
 
 /**
  * Lowest hook height, m (within HOOK_RANGE; HOOK_RANGE[0] when nothing is in the way), that keeps
@@ -1728,6 +1828,36 @@ export function levelTip(level: number): string {
  */
 export function clearReached(fallen: number, target: number, pulling: boolean): boolean {
   return fallen >= target && !pulling;
+}
+
+/** Speed, m/s, over which a piece counts as still falling (see `stillFalling`). */
+export const SETTLE_SPEED = 0.3;
+/** Seconds the wreckage must lie still (no piece still falling) before the level's result is given. */
+export const SETTLE_QUIET = 0.6;
+/** Seconds after the clear target is reached (or a piece last fell after it) before the result is given, at least. */
+export const SETTLE_LEAST = 1;
+/** Seconds after the clear target is reached that the result is given even if something still moves (a piece rocking). */
+export const SETTLE_MOST = 8;
+
+/**
+ * How many pieces are still falling: moving faster than SETTLE_SPEED (standing or already counted
+ * fallen; the score keeps counting those that go down while the wreckage settles).
+ */
+export function stillFalling(world: PhysicsWorld, pieces: readonly Piece[]): number {
+  const V = world.components.Velocity;
+  let n = 0;
+  for (const p of pieces) if (Math.hypot(V.x[p.body]!, V.y[p.body]!, V.z[p.body]!) > SETTLE_SPEED) n++;
+  return n;
+}
+
+/**
+ * Whether a level's settling is over and its result is given: the clear target reached (or a piece
+ * last fell) `since` s ago, at least SETTLE_LEAST, with nothing still falling for `quiet` s, at least
+ * SETTLE_QUIET; or SETTLE_MOST s after it was reached (`reached` s ago) whatever still moves. The
+ * player sees the collapse finish before the end card.
+ */
+export function settleOver(since: number, quiet: number, reached: number): boolean {
+  return (since >= SETTLE_LEAST && quiet >= SETTLE_QUIET) || reached >= SETTLE_MOST;
 }
 
 /**
