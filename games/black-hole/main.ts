@@ -1660,7 +1660,13 @@ function startDeath(): void {
 
 /** Puts the words for the last happening (`happening`) over the field, in `color`. */
 function setWaitWords(color: number): void {
-  waitText = waitWords(happening, { lives: bh.lives, practice: run?.spec.practice === true, touch, missedRing: run?.missedRing === true });
+  waitText = waitWords(happening, {
+    lives: bh.lives,
+    practice: run?.spec.practice === true,
+    touch,
+    missedRing: run?.missedRing === true,
+    stranded: run?.stranded ?? '',
+  });
   deathText.style.fill = color;
   deathText.text = waitText;
 }
