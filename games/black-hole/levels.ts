@@ -383,6 +383,19 @@ export function levelSpec(level: number): LevelSpec {
   }
 }
 
+/**
+ * How far ahead the page draws the predicted path on level `level` (integer >= 1), s: 3 s on levels 1
+ * and 2 (practice, and the wall, whose pull a newcomer learns from the path bending into it), 2 s on
+ * level 3, 1.5 s on levels 4 and 5, 1 s from level 6. The dots then show where the next moment takes
+ * the ship, not the whole way round the holes: a player who follows them still has to plan the route
+ * (the strangers who played the 3 s path on every level said the dots did the thinking).
+ * @throws RangeError unless level is an integer >= 1.
+ */
+export function previewSeconds(level: number): number {
+  if (!(Number.isInteger(level) && level >= 1)) throw new RangeError(`previewSeconds: level must be an integer >= 1, got ${level}`);
+  return level <= 2 ? 3 : level === 3 ? 2 : level <= 5 ? 1.5 : 1;
+}
+
 /** How a cleared level went (shown at the end of the level). */
 export interface LevelSummary {
   /** The level cleared. */

@@ -2192,7 +2192,8 @@ function ringExtents(): number[][] {
   return run.rings.slice(run.ringsTaken).map(([x, y]) => [x - R, x + R, y - R, y + R]);
 }
 /**
- * The tallest band across the field, between the finish line and `end` (screen px, y down), that no
+ * The tallest band across the field, between the finish line (after a game over, the canvas's top) and
+ * `end` (screen px, y down), that no
  * hole's drawing (disc and glow, `holeExtents` of the last frame, and `ghostExtents`: the cleared
  * level's holes drawn dimmed) nor a ring left (`ringExtents`) reaches within ACTION_GAP px:
  * [top, height], px in the canvas (height < 0 when there is none).
@@ -2203,7 +2204,9 @@ function freeBand(end: number): [number, number] {
   const taken = [...holeExtents.slice(0, bh.holes.length), ...ghostExtents, ...ringExtents()]
     .map((e) => [cam.toScreenY(e[3]!) - ACTION_GAP, cam.toScreenY(e[2]!) + ACTION_GAP] as const)
     .sort((a, b) => a[0] - b[0]);
-  let from = cam.toScreenY(bh.lineY) + ACTION_GAP;
+  // After a game over from the canvas's top: the finish line counts for nothing then, and on a phone's
+  // tall narrow field the holes of a level such as the zig-zag leave no band between the line and the pad.
+  let from = (bh.over ? 0 : cam.toScreenY(bh.lineY)) + ACTION_GAP;
   let best = -1,
     bestTop = 0;
   for (const [top, bottom] of [...taken, [end, end] as const]) {
