@@ -48,7 +48,7 @@ import {
 import { createPauseOverlay, startPixiGame } from '@bitphysics/game-kit/pixi';
 import { type PhysicsWorld, Rng, slotOf, stateHash } from '@bitphysics/physics';
 import { Container, Graphics, Sprite, Text, Texture } from 'pixi.js';
-import { canThrust, type LevelRun, levelPoints, RING_RADIUS, startLevel } from './levels';
+import { canThrust, type LevelRun, levelPoints, previewSeconds, RING_RADIUS, startLevel } from './levels';
 import { releaseStep, TAP_STEPS } from './press-timing';
 import { type BlackHoleReplay, createBlackHoleReplay, type GameStepEvent } from './replay';
 import {
@@ -177,7 +177,8 @@ let predictor: Predictor;
 /** Records every input of the run (V plays it back from the start). */
 let replay: BlackHoleReplay;
 /**
- * Steps of the predicted path drawn ahead of the ship: 3 s, as long as the pad's. A wall of holes
+ * Steps of the predicted path drawn ahead of the ship at most (in levels, as far as the level shows:
+ * ./levels.ts `previewSeconds`, 3 s on levels 1 and 2, less later): 3 s, as long as the pad's. A wall of holes
  * (levels 2 and 3) pulls like a line of mass, harder than the thrust within some 6 m; a pilot that
  * flies up and steers by the path to keep it clear (scripts/black-hole-levels.mjs, reacting every
  * 0.3 s) falls in on level 2 nearly always seeing 1 s ahead, and often seeing 2 s. A 2 s path stops
@@ -2294,7 +2295,12 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     const liveThrust = bh.thrust;
     if (shell.paused) bh.thrust = pausedThrust;
     const fromPad = (run ? run.parked && canThrust(bh, run) : bh.parked) && bh.thrust === 'none';
-    const steps = fromPad ? PAD_PATH_STEPS : PATH_STEPS;
+    // In levels, as far ahead as the level shows (../levels.ts `previewSeconds`: less on later levels).
+    const steps = run
+      ? Math.min(PATH_STEPS, Math.round(previewSeconds(run.spec.level) / bh.world.dt))
+      : fromPad
+        ? PAD_PATH_STEPS
+        : PATH_STEPS;
     if (fromPad) {
       // Only the path holding ↑: the paths of held diagonals are red on every layout (./levels.ts
       // `heldThrustClears` draws again where one clears), so drawn beside it they said nothing a
