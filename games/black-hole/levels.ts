@@ -91,7 +91,7 @@ export interface LevelSpec {
    * holes to clear the way and holding ↑ (the predicted path turned blue) never clears the level.
    */
   readonly anchored: boolean;
-  /** Seconds of thrust the tank holds (Infinity: no limit). */
+  /** Seconds of thrust the tank holds (Infinity: no limit); each attempt starts with it full. */
   readonly fuel: number;
   /**
    * Clear width, m, of the one gap in a wall of holes laid across the whole field at mid-height
@@ -192,9 +192,8 @@ export const RING_OFFSET = 7;
 
 /**
  * The rings of level `level` (integer >= 1; see `LevelSpec.rings`): one on levels 1 to 7 (the rule
- * is learnt on practice), none from level 8, where the fuel runs out over the attempts: with a ring
- * to reach as well, the steering players of the tests (test/games/black-hole-players.ts) ran out on
- * some layouts.
+ * is learnt on practice), none from level 8, where the fuel is limited: with a ring to reach as
+ * well, the steering players of the tests (test/games/black-hole-players.ts) ran out on some layouts.
  */
 export function levelRings(level: number): number {
   return level <= 7 ? 1 : 0;
@@ -425,7 +424,7 @@ export interface LevelRun {
   spec: LevelSpec;
   /** Seconds since the level began. */
   time: number;
-  /** Fuel left, s of thrust (Infinity when unlimited). */
+  /** Fuel left on the current attempt, s of thrust (Infinity when unlimited; filled again when an attempt ends). */
   fuelLeft: number;
   /** The rings' centres, m, in the order they are to be flown through (`LevelSpec.rings`; none while waiting). */
   readonly rings: [number, number][];
