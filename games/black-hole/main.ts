@@ -26,7 +26,7 @@
  *
  * Drawn: nebulae behind the stars; each hole as a black disc of its Schwarzschild radius with a
  * photon ring, an orange glow and a tilted disc of hot gas whose clumps go round it; the exhaust
- * (particles, additive); the ship with a flame opposite its thrust; its predicted path for the next 3 s (after a tap, with the
+ * (particles, additive); the ship with a flame opposite its thrust; its predicted path for the next 3 s (less on later levels: ./levels.ts `previewSeconds`; after a tap, with the
  * thrust ending where the tap's does), integrated in a small second world
  * (rules.ts `predictPath`) and drawn as fading dots, red where it falls into a hole (a ring) or leaves the
  * field (a cross at the edge: the ship would be lost), blue where it reaches the finish line, grey where it runs on mid-field, undecided (on the pad, before the first thrust, the path holding ↑ would take, 3 s of it).
@@ -1781,7 +1781,7 @@ app.stage.addChild(pathLabel);
 const PATH_DOT_GAP = 7;
 /**
  * The words that say what the dots are, by the end of a path that runs on (grey, or blue to the
- * line): "predicted path, next 3 s" or "predicted path: reaches the line", in the path's colour. Shown
+ * line): "predicted path, next 3 s" (the seconds the path is drawn for) or "predicted path: reaches the line", in the path's colour. Shown
  * the first times a path runs on, for PATH_HINT_MS of play in all (the page's whole life: a player
  * learns it once), not from the pad (where the pad's paths start at the ship, and level 1's coach says
  * what the dots are).
@@ -1809,7 +1809,9 @@ function drawPathHint(color: number, fromPad: boolean): void {
   pathHintLeft.at = now;
   pathHint.visible = show;
   if (!show) return;
-  const text = pathReachesLine ? 'predicted path: reaches the line' : 'predicted path, next 3 s';
+  // As far ahead as the path is drawn: the level's (../levels.ts `previewSeconds`), 3 s outside levels.
+  const ahead = run ? previewSeconds(run.spec.level) : 3;
+  const text = pathReachesLine ? 'predicted path: reaches the line' : `predicted path, next ${ahead} s`;
   if (pathHint.text !== text) pathHint.text = text;
   if (pathHint.style.fill !== color) pathHint.style.fill = color;
   const cam = renderer.camera;

@@ -1,5 +1,6 @@
 /**
- * Black hole on a phone (390 x 844, touch): after the last life the Continue panel (the game-over card
+ * Black hole on a phone (390 x 844, touch). Level 3's predicted path runs 2 s ahead
+ * (games/black-hole/levels.ts `previewSeconds`), and its words say so. After the last life the Continue panel (the game-over card
  * and its button) covers none of the holes left on the field. The issue this answers: on level 3's
  * zig-zag the holes reach every height between the finish line and the start pad of the phone's tall
  * narrow field, so no band there fitted the panel, and it stayed in the middle of the field, over two
@@ -19,7 +20,21 @@ afterAll(async () => {
   await h?.close();
 });
 
-describe('black hole on a phone, the continue panel', () => {
+describe('black hole on a phone, the path and the continue panel', () => {
+  it('on level 3 the path runs 2 s ahead, and its words say so (they said 3 s on every level)', async () => {
+    type Path = { pathPoints(): number; padPath(): boolean; pathHint(): string; bh: { world: { dt: number } } };
+    // A tap of ↑ by touch: the path then runs on from the ship, and the words by its end say how far.
+    const up = (await g.page.getByRole('button', { name: 'thrust up', exact: true }).boundingBox())!;
+    await g.page.touchscreen.tap(up.x + up.width / 2, up.y + up.height / 2);
+    const seen = await g.waitFor(() => {
+      const w = window.game as unknown as Path;
+      return !w.padPath() && w.pathHint() !== '' ? { hint: w.pathHint(), points: w.pathPoints(), dt: w.bh.world.dt } : null;
+    }, null);
+    expect(seen.hint).toBe('predicted path, next 2 s');
+    // 2 s of steps and the ship's own point, at most (it stops short where it falls in or leaves).
+    expect(seen.points).toBeLessThanOrEqual(Math.round(2 / seen.dt) + 1);
+  });
+
   it("after the last life on level 3 the panel covers no hole: nor the card, nor the button, 1.5 radii round each (the hole's disc)", async () => {
     type Cam = { toScreenX(x: number): number; toScreenY(y: number): number; toScreenLength(l: number): number };
     type Page = {
