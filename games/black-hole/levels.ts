@@ -91,7 +91,7 @@ export interface LevelSpec {
    * holes to clear the way and holding ↑ (the predicted path turned blue) never clears the level.
    */
   readonly anchored: boolean;
-  /** Seconds of thrust the tank holds (Infinity: no limit). */
+  /** Seconds of thrust the tank holds (Infinity: no limit); each attempt starts with it full. */
   readonly fuel: number;
   /**
    * Clear width, m, of the one gap in a wall of holes laid across the whole field at mid-height
@@ -192,9 +192,8 @@ export const RING_OFFSET = 7;
 
 /**
  * The rings of level `level` (integer >= 1; see `LevelSpec.rings`): one on levels 1 to 7 (the rule
- * is learnt on practice), none from level 8, where the fuel runs out over the attempts: with a ring
- * to reach as well, the steering players of the tests (test/games/black-hole-players.ts) ran out on
- * some layouts.
+ * is learnt on practice), none from level 8, where the fuel is limited: with a ring to reach as
+ * well, the steering players of the tests (test/games/black-hole-players.ts) ran out on some layouts.
  */
 export function levelRings(level: number): number {
   return level <= 7 ? 1 : 0;
@@ -383,6 +382,19 @@ export function levelSpec(level: number): LevelSpec {
   }
 }
 
+/**
+ * How far ahead the page draws the predicted path on level `level` (integer >= 1), s: 3 s on levels 1
+ * and 2 (practice, and the wall, whose pull a newcomer learns from the path bending into it), 2 s on
+ * level 3, 1.5 s on levels 4 and 5, 1 s from level 6. The dots then show where the next moment takes
+ * the ship, not the whole way round the holes: a player who follows them still has to plan the route
+ * (the strangers who played the 3 s path on every level said the dots did the thinking).
+ * @throws RangeError unless level is an integer >= 1.
+ */
+export function previewSeconds(level: number): number {
+  if (!(Number.isInteger(level) && level >= 1)) throw new RangeError(`previewSeconds: level must be an integer >= 1, got ${level}`);
+  return level <= 2 ? 3 : level === 3 ? 2 : level <= 5 ? 1.5 : 1;
+}
+
 /** How a cleared level went (shown at the end of the level). */
 export interface LevelSummary {
   /** The level cleared. */
@@ -412,7 +424,7 @@ export interface LevelRun {
   spec: LevelSpec;
   /** Seconds since the level began. */
   time: number;
-  /** Fuel left, s of thrust (Infinity when unlimited). */
+  /** Fuel left on the current attempt, s of thrust (Infinity when unlimited; filled again when an attempt ends). */
   fuelLeft: number;
   /** The rings' centres, m, in the order they are to be flown through (`LevelSpec.rings`; none while waiting). */
   readonly rings: [number, number][];
@@ -420,6 +432,25 @@ export interface LevelRun {
   ringsTaken: number;
   /** Whether the last attempt ended by flying past the line with a ring left (lost off the top); false until one does. */
   missedRing: boolean;
+  /**
+   * Why the last attempt ended other than by a fall or by leaving the field: 'orbit' (caught going round
+   * a hole, ORBIT_TURNS turns: `trackOrbit`), 'stall' (no new height for STALL_SECONDS: caught among
+   * holes), 'fuel' (coasting with an empty tank for FUEL_OUT_SECONDS), else ''.
+   */
+  stranded: '' | 'orbit' | 'stall' | 'fuel';
+  /**
+   * The winding of the current attempt round the holes (`trackOrbit`): the hole nearest the ship at the
+   * last step (-1: none yet), the ship's angle round it then (rad), and for each hole the angle swept
+   * round it while it was the nearest (rad, signed: turns one way and back cancel).
+   */
+  readonly orbit: { hole: number; angle: number; swept: number[] };
+  /**
+   * The current attempt's climb: its height record, m (raised whenever the ship gets 0.5 m above it),
+   * and the level's `time` when it was last raised, s.
+   */
+  readonly climb: { top: number; since: number };
+  /** Seconds the current attempt has flown with an empty tank. */
+  emptyTime: number;
   /** Sideways velocity of each hole, m/s (same order as game.holes). */
   readonly holeVx: number[];
   /** Between levels (after a clear, before `beginLevel`): steps do nothing. */
@@ -455,6 +486,10 @@ export function startLevel(game: BlackHoleGame, level: number): LevelRun {
     rings: [],
     ringsTaken: 0,
     missedRing: false,
+    stranded: '',
+    orbit: { hole: -1, angle: 0, swept: [] },
+    climb: { top: 0, since: 0 },
+    emptyTime: 0,
     holeVx: [],
     waiting: false,
     summary: null,
@@ -510,6 +545,8 @@ function layLevel(game: BlackHoleGame, run: LevelRun, level: number): void {
   run.attemptStart = 0;
   run.attempts = 0;
   run.fuelLeft = spec.fuel;
+  restartAttempt(run);
+  run.stranded = '';
   run.fallsAtStart = game.falls;
   run.parked = true;
   resetShip(game);
@@ -1092,6 +1129,83 @@ function driftBodies(
 }
 
 /**
+ * Turns round one hole that end an attempt as caught in orbit (`trackOrbit`): two. A slingshot round
+ * a hole sweeps well under one turn; a ship still going round after two is held by a pull stronger
+ * than the thrust (level 3's small holes hold a ship within some 1.8 m) and would circle for ever.
+ */
+export const ORBIT_TURNS = 2;
+
+/**
+ * Seconds an attempt may coast with an empty tank before it ends (`stepLevel`): long enough to coast
+ * up to the line from mid-field, short enough that a ship drifting with no way to steer does not
+ * hold up the game.
+ */
+export const FUEL_OUT_SECONDS = 8;
+
+/**
+ * Seconds an attempt may fly without climbing 0.5 m above its best height before it ends
+ * (`stepLevel`): a ship thrown from hole to hole (level 3's zig-zag can hold one for many seconds, no
+ * one hole circled twice) goes back to the start. Well over the longest sideways flight a level asks
+ * (level 2's, to the wall's gap: some 4 s).
+ */
+export const STALL_SECONDS = 12;
+
+/** What the status line says when an attempt ends stranded (`LevelRun.stranded`). */
+const STRANDED_MESSAGE: Readonly<Record<'orbit' | 'stall' | 'fuel', string>> = Object.freeze({
+  orbit: 'Caught in orbit round a hole: back to the start (no penalty). Thrust along the orbit early to break out.',
+  stall: 'Caught among the holes, getting nowhere: back to the start (no penalty).',
+  fuel: 'Out of fuel and adrift: back to the start with a full tank (no penalty).',
+});
+
+/** Starts a new attempt's counts: its winding round the holes, its best height, its time on an empty tank. */
+function restartAttempt(run: LevelRun): void {
+  run.emptyTime = 0;
+  run.orbit.hole = -1;
+  run.orbit.swept.length = 0;
+  run.climb.top = -Infinity;
+  run.climb.since = run.time;
+}
+
+/**
+ * Follows the ship's winding round the holes for one step: the angle it sweeps round the hole nearest
+ * it (its centre nearest, less its horizon radius) is added to that hole's sum (signed, so a swing
+ * round it and back cancels; a step in which another hole became the nearest adds nothing).
+ * @returns whether the ship has now gone ORBIT_TURNS whole turns round one hole.
+ */
+export function trackOrbit(game: BlackHoleGame, run: LevelRun): boolean {
+  const P = game.world.components.Position,
+    s = slotOf(game.ship);
+  const x = P.x[s]!,
+    y = P.y[s]!;
+  let near = -1,
+    nearGap = Infinity;
+  for (let i = 0; i < game.holes.length; i++) {
+    const h = slotOf(game.holes[i]!);
+    const gap = Math.hypot(x - P.x[h]!, y - P.y[h]!) - game.holeRadius[i]!;
+    if (gap < nearGap) [near, nearGap] = [i, gap];
+  }
+  const o = run.orbit;
+  if (near < 0) {
+    o.hole = -1;
+    return false;
+  }
+  const h = slotOf(game.holes[near]!);
+  const angle = Math.atan2(y - P.y[h]!, x - P.x[h]!);
+  let swept = o.swept[near] ?? 0;
+  if (near === o.hole) {
+    let d = angle - o.angle;
+    if (d > Math.PI) d -= 2 * Math.PI;
+    else if (d < -Math.PI) d += 2 * Math.PI;
+    swept += d;
+  }
+  while (o.swept.length < near) o.swept.push(0);
+  o.swept[near] = swept;
+  o.hole = near;
+  o.angle = angle;
+  return Math.abs(swept) >= ORBIT_TURNS * 2 * Math.PI;
+}
+
+/**
  * One step of a level: nothing while waiting; else the holes drift, a parked ship's thrust loses its
  * downward part (`padThrust`), the fuel burns while thrusting
  * (at zero the thrust stops and stays off), the game steps (./rules `stepBlackHole`), and a parked
@@ -1145,10 +1259,36 @@ export function stepLevel(game: BlackHoleGame, run: LevelRun): BlackHoleEvent | 
         ? `Ring ${run.ringsTaken} of ${run.rings.length}! Now the next ring.`
         : `${ringWord(run.rings.length)} done! Now the green line.`;
   }
+  let stranded: LevelRun['stranded'] = '';
+  if (event === 'none' && !run.parked) {
+    // An attempt that can no longer end by itself ends here: caught going round a hole, or coasting
+    // with an empty tank (no way to steer) for FUEL_OUT_SECONDS.
+    run.emptyTime = run.fuelLeft > 0 ? 0 : run.emptyTime + dt;
+    const y = Pos.y[ship]!;
+    if (y > run.climb.top + 0.5) [run.climb.top, run.climb.since] = [y, run.time];
+    stranded = trackOrbit(game, run)
+      ? 'orbit'
+      : run.time - run.climb.since >= STALL_SECONDS
+        ? 'stall'
+        : run.emptyTime >= FUEL_OUT_SECONDS
+          ? 'fuel'
+          : '';
+    if (stranded) {
+      resetShip(game);
+      event = 'lost';
+      game.message = STRANDED_MESSAGE[stranded];
+    }
+  }
+  if (event === 'fell' || event === 'lost' || event === 'over') {
+    // Each attempt flies on a full tank, and winds round the holes afresh.
+    run.fuelLeft = run.spec.fuel;
+    restartAttempt(run);
+  }
   if (event === 'fell' || event === 'lost') {
-    const missed = event === 'lost' && run.ringsTaken < run.rings.length && y0 >= game.lineY - 1;
+    const missed = event === 'lost' && !stranded && run.ringsTaken < run.rings.length && y0 >= game.lineY - 1;
     run.ringsTaken = 0;
     run.missedRing = missed;
+    run.stranded = stranded;
     if (missed)
       game.message = `Missed ${run.rings.length === 1 ? 'the ring' : 'a ring'}: the line counts only after every ring. Back to the start.`;
   }

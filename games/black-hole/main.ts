@@ -26,7 +26,7 @@
  *
  * Drawn: nebulae behind the stars; each hole as a black disc of its Schwarzschild radius with a
  * photon ring, an orange glow and a tilted disc of hot gas whose clumps go round it; the exhaust
- * (particles, additive); the ship with a flame opposite its thrust; its predicted path for the next 3 s (after a tap, with the
+ * (particles, additive); the ship with a flame opposite its thrust; its predicted path for the next 3 s (less on later levels: ./levels.ts `previewSeconds`; after a tap, with the
  * thrust ending where the tap's does), integrated in a small second world
  * (rules.ts `predictPath`) and drawn as fading dots, red where it falls into a hole (a ring) or leaves the
  * field (a cross at the edge: the ship would be lost), blue where it reaches the finish line, grey where it runs on mid-field, undecided (on the pad, before the first thrust, the path holding ↑ would take, 3 s of it).
@@ -50,7 +50,7 @@ import {
 import { createPauseOverlay, startPixiGame } from '@bitphysics/game-kit/pixi';
 import { type PhysicsWorld, Rng, slotOf, stateHash } from '@bitphysics/physics';
 import { Container, Graphics, Sprite, Text, Texture } from 'pixi.js';
-import { canThrust, type LevelRun, levelPoints, RING_RADIUS, startLevel } from './levels';
+import { canThrust, type LevelRun, levelPoints, previewSeconds, RING_RADIUS, startLevel } from './levels';
 import { releaseStep, TAP_STEPS } from './press-timing';
 import { type BlackHoleReplay, createBlackHoleReplay, type GameStepEvent } from './replay';
 import {
@@ -166,7 +166,8 @@ let predictor: Predictor;
 /** Records every input of the run (V plays it back from the start). */
 let replay: BlackHoleReplay;
 /**
- * Steps of the predicted path drawn ahead of the ship: 3 s, as long as the pad's. A wall of holes
+ * Steps of the predicted path drawn ahead of the ship at most (in levels, as far as the level shows:
+ * ./levels.ts `previewSeconds`, 3 s on levels 1 and 2, less later): 3 s, as long as the pad's. A wall of holes
  * (levels 2 and 3) pulls like a line of mass, harder than the thrust within some 6 m; a pilot that
  * flies up and steers by the path to keep it clear (scripts/black-hole-levels.mjs, reacting every
  * 0.3 s) falls in on level 2 nearly always seeing 1 s ahead, and often seeing 2 s. A 2 s path stops
@@ -1649,7 +1650,13 @@ function startDeath(): void {
 
 /** Puts the words for the last happening (`happening`) over the field, in `color`. */
 function setWaitWords(color: number): void {
-  waitText = waitWords(happening, { lives: bh.lives, practice: run?.spec.practice === true, touch, missedRing: run?.missedRing === true });
+  waitText = waitWords(happening, {
+    lives: bh.lives,
+    practice: run?.spec.practice === true,
+    touch,
+    missedRing: run?.missedRing === true,
+    stranded: run?.stranded ?? '',
+  });
   deathText.style.fill = color;
   deathText.text = waitText;
 }
@@ -1763,7 +1770,7 @@ app.stage.addChild(pathLabel);
 const PATH_DOT_GAP = 7;
 /**
  * The words that say what the dots are, by the end of a path that runs on (grey, or blue to the
- * line): "predicted path, next 3 s" or "predicted path: reaches the line", in the path's colour. Shown
+ * line): "predicted path, next 3 s" (the seconds the path is drawn for) or "predicted path: reaches the line", in the path's colour. Shown
  * the first times a path runs on, for PATH_HINT_MS of play in all (the page's whole life: a player
  * learns it once), not from the pad (where the pad's paths start at the ship, and level 1's coach says
  * what the dots are).
@@ -1791,7 +1798,9 @@ function drawPathHint(color: number, fromPad: boolean): void {
   pathHintLeft.at = now;
   pathHint.visible = show;
   if (!show) return;
-  const text = pathReachesLine ? 'predicted path: reaches the line' : 'predicted path, next 3 s';
+  // As far ahead as the path is drawn: the level's (../levels.ts `previewSeconds`), 3 s outside levels.
+  const ahead = run ? previewSeconds(run.spec.level) : 3;
+  const text = pathReachesLine ? 'predicted path: reaches the line' : `predicted path, next ${ahead} s`;
   if (pathHint.text !== text) pathHint.text = text;
   if (pathHint.style.fill !== color) pathHint.style.fill = color;
   const cam = renderer.camera;
@@ -2175,7 +2184,8 @@ function ringExtents(): number[][] {
   return run.rings.slice(run.ringsTaken).map(([x, y]) => [x - R, x + R, y - R, y + R]);
 }
 /**
- * The tallest band across the field, between the finish line and `end` (screen px, y down), that no
+ * The tallest band across the field, between the finish line (after a game over, the canvas's top) and
+ * `end` (screen px, y down), that no
  * hole's drawing (disc and glow, `holeExtents` of the last frame, and `ghostExtents`: the cleared
  * level's holes drawn dimmed) nor a ring left (`ringExtents`) reaches within ACTION_GAP px:
  * [top, height], px in the canvas (height < 0 when there is none).
@@ -2186,7 +2196,9 @@ function freeBand(end: number): [number, number] {
   const taken = [...holeExtents.slice(0, bh.holes.length), ...ghostExtents, ...ringExtents()]
     .map((e) => [cam.toScreenY(e[3]!) - ACTION_GAP, cam.toScreenY(e[2]!) + ACTION_GAP] as const)
     .sort((a, b) => a[0] - b[0]);
-  let from = cam.toScreenY(bh.lineY) + ACTION_GAP;
+  // After a game over from the canvas's top: the finish line counts for nothing then, and on a phone's
+  // tall narrow field the holes of a level such as the zig-zag leave no band between the line and the pad.
+  let from = (bh.over ? 0 : cam.toScreenY(bh.lineY)) + ACTION_GAP;
   let best = -1,
     bestTop = 0;
   for (const [top, bottom] of [...taken, [end, end] as const]) {
@@ -2274,7 +2286,12 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     const liveThrust = bh.thrust;
     if (shell.paused) bh.thrust = pausedThrust;
     const fromPad = (run ? run.parked && canThrust(bh, run) : bh.parked) && bh.thrust === 'none';
-    const steps = fromPad ? PAD_PATH_STEPS : PATH_STEPS;
+    // In levels, as far ahead as the level shows (../levels.ts `previewSeconds`: less on later levels).
+    const steps = run
+      ? Math.min(PATH_STEPS, Math.round(previewSeconds(run.spec.level) / bh.world.dt))
+      : fromPad
+        ? PAD_PATH_STEPS
+        : PATH_STEPS;
     if (fromPad) {
       // Only the path holding ↑: the paths of held diagonals are red on every layout (./levels.ts
       // `heldThrustClears` draws again where one clears), so drawn beside it they said nothing a

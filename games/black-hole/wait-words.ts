@@ -20,12 +20,18 @@ export interface WaitContext {
   readonly touch: boolean;
   /** Whether the loss was a flight past the line with a ring left (`LevelRun.missedRing`). Default false. */
   readonly missedRing?: boolean;
+  /**
+   * Why the attempt ended, when the ship was not lost off the field but stranded
+   * (./levels.ts `LevelRun.stranded`: 'orbit', 'stall', 'fuel'); default '' (lost off the field).
+   */
+  readonly stranded?: '' | 'orbit' | 'stall' | 'fuel';
 }
 
 /**
  * The words for `happening`, lines separated by '\n': a fall's ("Swallowed!", the lives left or the
  * practice note, how to go on), a loss off the field's ("Lost in space", or "Missed the ring" past the
- * line with a ring left; no life lost; how to go on), a
+ * line with a ring left; "Caught in orbit", "Caught among the holes" or "Out of fuel" for an attempt
+ * ended stranded; no life lost; how to go on), a
  * game over's; '' when there is nothing to say ('level', 'flying').
  * @throws RangeError when `ctx.lives` is not an integer in [0, 99].
  */
@@ -42,6 +48,9 @@ export function waitWords(happening: ShipHappening, ctx: WaitContext): string {
         ? `Swallowed!\nPractice: no life lost\n${go}`
         : `Swallowed!\n${ctx.lives} ${ctx.lives === 1 ? 'life' : 'lives'} left\n${go}`;
     case 'lost':
+      if (ctx.stranded === 'orbit') return `Caught in orbit!\nBack to the start, no life lost\n${go}`;
+      if (ctx.stranded === 'stall') return `Caught among the holes!\nBack to the start, no life lost\n${go}`;
+      if (ctx.stranded === 'fuel') return `Out of fuel!\nBack to the start, tank full, no life lost\n${go}`;
       return ctx.missedRing === true
         ? `Missed the ring!\nThe line counts after it: back to the start, no life lost\n${go}`
         : `Lost in space!\nBack to the start, no life lost\n${go}`;

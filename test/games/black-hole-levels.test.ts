@@ -7,7 +7,7 @@
  * and a summary and lays out the next one.
  */
 
-import { setEmitterEnabled, slotOf } from '@bitphysics/physics';
+import { setEmitterEnabled, setPosition, slotOf } from '@bitphysics/physics';
 import { describe, expect, test } from 'vitest';
 import {
   BONUS_SECONDS,
@@ -744,9 +744,15 @@ describe('levels', () => {
     expect(run.fuelLeft).toBe(levelSpec(8).fuel);
     for (let k = 0; k < 30; k++) stepLevel(g, run);
     expect(run.fuelLeft).toBe(levelSpec(8).fuel);
-    setThrust(g, 'left'); // sideways, so the level does not end (↓ on the pad would not thrust)
+    // Sideways (↓ on the pad would not thrust), the ship held on a slow climb up from the start so the
+    // attempt does not end (an attempt that ends, or stalls, refills the tank for the next:
+    // test/games/black-hole-stranded.test.ts).
+    setThrust(g, 'left');
     const steps = Math.ceil(run.fuelLeft / g.world.dt) + 5;
-    for (let k = 0; k < steps && g.thrust !== 'none'; k++) stepLevel(g, run);
+    for (let k = 0; k < steps && g.thrust !== 'none'; k++) {
+      setPosition(g.world, g.ship, [g.start[0], g.start[1] + 0.15 * k * g.world.dt]);
+      stepLevel(g, run);
+    }
     expect(run.fuelLeft).toBe(0);
     expect(g.thrust).toBe('none');
     expect(canThrust(g, run)).toBe(false);
