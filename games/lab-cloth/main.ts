@@ -267,8 +267,8 @@ function labStep(world: PhysicsWorld): void {
   if (heldForScissors()) return;
   // Still air for the scissors: the sheet's swing is damped too (not a gust the player blows).
   if (calm > 0 && blow === 0) dampSheet(world, Math.exp(-CALM_DAMPING * calm * world.dt));
-  // The hand's pull follows how far it leads the patch it holds (grab.ts).
-  grab?.update();
+  // The hand's pull follows how far it leads the patch it holds, and hardens while held far (grab.ts).
+  grab?.update(world.dt);
   const t0 = performance.now();
   physicsStep(world);
   stepMs = performance.now() - t0;
