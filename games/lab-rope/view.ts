@@ -10,6 +10,7 @@
 import { isAlive, type PhysicsWorld, slotOf } from '@bitphysics/physics';
 import type { Camera } from '@bitphysics/render-pixi';
 import { Container, Graphics, Sprite, Texture } from 'pixi.js';
+import { CUT_END_TRIM, trimPolyline } from './cut';
 import { BALL_RADIUS, type Level, type RopePiece, roomHalfWidth, WALL } from './scene';
 
 /** Rope thickness, m (drawn at least 4 px). */
@@ -176,7 +177,11 @@ export class RopeView {
         } else xs.push(nx, ny);
       }
       pieces.push({ pts: xs, cutStart, cutEnd: false });
-      for (const piece of pieces) if (piece.pts.length >= 4) this.drawCord(piece.pts, width, piece.cutStart, piece.cutEnd);
+      // A cut end is drawn short of its body (CUT_END_TRIM), so the cut shows as a gap at once.
+      const trim = CUT_END_TRIM * width;
+      for (const piece of pieces)
+        if (piece.pts.length >= 4)
+          this.drawCord(trimPolyline(piece.pts, piece.cutStart ? trim : 0, piece.cutEnd ? trim : 0), width, piece.cutStart, piece.cutEnd);
     }
     // Ball, and its shadow on the floor: wider and fainter the higher it is.
     const r = cam.toScreenLength(BALL_RADIUS);
