@@ -1098,9 +1098,12 @@ function draw(alpha: number, world: PhysicsWorld): void {
   readout.set(2, String(cut));
   readout.set(3, String(challenge.scraps));
   readout.set(4, `${fmt(sheet!.shownStretch * 100, 3)} %`);
+  // While the sheet holds still (the scissors down on a sheet for careful cuts, or paused) no step
+  // runs: the readout says so rather than showing the last step's figures, frozen.
+  const held = heldForScissors();
   windAt(world, 2, 3, 0, world.time, wind);
-  readout.set(5, `${fmt(wind[0]!, 2)} m/s`);
-  readout.set(6, `${fmt(stepMs, 3)} ms`);
+  readout.set(5, held ? 'still (scissors)' : `${fmt(wind[0]!, 2)} m/s`);
+  readout.set(6, held ? 'held (scissors)' : shell.paused ? 'paused' : `${fmt(stepMs, 3)} ms`);
 }
 shell.expose({
   params,
