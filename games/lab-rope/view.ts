@@ -378,6 +378,12 @@ export class RopeView {
       r = X(bx + half),
       t = Y(by + depth),
       b = Y(by);
+    // The open mouth, seen a little from above: a dark inside behind a back rim, its lower half hidden
+    // by the basket's side drawn over it (drawn side-on alone, a wide basket read as a shut crate).
+    const mouth = Math.min(S(0.3), (b - t) * 0.45);
+    g.ellipse((l + r) / 2, t, (r - l) / 2 + S(0.02), mouth)
+      .fill({ color: 0x3a2610 })
+      .stroke({ width: Math.max(2, S(0.05)), color: 0x8a5f26 });
     g.poly([l, t, r, t, r - S(0.06), b, l + S(0.06), b])
       .fill({ color: 0xb9853f })
       .stroke({ width: 2, color: 0x6e4a1c });
