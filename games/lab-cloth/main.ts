@@ -296,7 +296,7 @@ const game = await startPixiGame({
     { keys: 'G (hold)', action: 'a gust of wind', touch: 'Gust (hold)' },
     { keys: 'Right drag', action: 'cut, with either tool', touch: '' },
     { keys: 'Ctrl+Z', action: 'undo the last cut', touch: 'Undo' },
-    { keys: 'Paused', touch: 'Paused', action: 'the sheet holds still and the scissors still cut: a steady hand for ★★★' },
+    { keys: 'Paused', touch: 'Paused', action: 'the sheet holds still; the scissors still cut' },
   ],
   renderer: { view },
   onFrame: (alpha, world) => draw(alpha, world),
