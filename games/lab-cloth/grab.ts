@@ -27,6 +27,13 @@ export interface GrabOptions {
   firm: number;
   /** How fast the pull grows past `firm` with the hand's lead on the patch, N/m, >= 0. */
   slope: number;
+  /**
+   * How fast a held pull hardens, N/s per m of the hand's lead past `holdLead`, >= 0: the grip pulls
+   * harder the longer the hand is held well past the cloth (ClothGrab.update with a time step).
+   */
+  hold: number;
+  /** The hand's lead on the patch, m, >= 0, past which a held pull hardens. */
+  holdLead: number;
 }
 
 /**
@@ -36,9 +43,14 @@ export interface GrabOptions {
  * a few centimetres of the hand while the sheet follows, so a short pull (0.4 m down from the lower
  * middle) stretches the links by the hand to about 20% and tears nothing; pulled down from the middle of
  * the sheet, it tears once the hand is about 1.1 m from where it took hold (0.57 m with a grip of a
- * fixed 80 N cap), and the hand keeps the torn piece (test/games/lab-cloth.test.ts).
+ * fixed 80 N cap), and the hand keeps the torn piece (test/games/lab-cloth.test.ts). Held there, the
+ * pull hardens by 30 N a second for each metre the hand leads the patch past 0.5 m, so a hand held well
+ * past the sheet tears it within seconds even where the sheet's give leaves the pull just short of
+ * tearing (a 1 m pull from the middle, held: without it the links by the hand level off at 43.4% and
+ * never tear; with it the sheet tears 1.9 s in), while a gentle pull (0.8 m: the patch within 0.45 m
+ * of the hand) never hardens.
  */
-export const GRAB: GrabOptions = { radius: 0.4, stiffness: 300, maxForce: 80, firm: 15, slope: 20 };
+export const GRAB: GrabOptions = { radius: 0.4, stiffness: 300, maxForce: 80, firm: 15, slope: 20, hold: 30, holdLead: 0.5 };
 
 /**
  * The lab's grip for a sheet of `size` points across: GRAB with its radius at least 1.5 link spacings,
@@ -53,8 +65,8 @@ export function gripFor(size: number): GrabOptions {
  * `radius`, each by a soft pin (pinClothPoint with options) toward t_i = hand + o_i, o_i its offset from
  * the press, with stiffness w_i k (compliance 1 / (w_i k)) and largest force w_i maxForce, where the
  * weights w_i = (1 - d_i / radius)^2, normalised to sum 1, favour the points nearest the press. The
- * grip's total pull is capped at F(L) = min(maxForce, firm + slope max(0, L - firm / stiffness)), L the
- * hand's distance from the patch (update).
+ * grip's total pull is capped at F(L) = min(maxForce, firm + slope max(0, L - firm / stiffness) + H), L the
+ * hand's distance from the patch and H the held pull's hardening (update).
  */
 export class ClothGrab {
   /** Held points' handles. */
@@ -65,6 +77,8 @@ export class ClothGrab {
   readonly offsets: number[] = [];
   /** Where the hand is, m. */
   readonly hand: [number, number];
+  /** How much the held pull has hardened, N (the cap's H: grows by hold (L - holdLead) a second while L > holdLead). */
+  hardened = 0;
 
   private constructor(
     private readonly world: PhysicsWorld,
@@ -115,16 +129,28 @@ export class ClothGrab {
     const o = this.options;
     const [px, py] = this.patch(this.at);
     const lead = Math.hypot(this.hand[0] - px, this.hand[1] - py);
-    return Math.min(o.maxForce, o.firm + o.slope * Math.max(0, lead - o.firm / o.stiffness));
+    return Math.min(o.maxForce, o.firm + o.slope * Math.max(0, lead - o.firm / o.stiffness) + this.hardened);
+  }
+
+  /** The hand's distance from the patch it holds now, m. */
+  lead(): number {
+    const [px, py] = this.patch(this.at);
+    return Math.hypot(this.hand[0] - px, this.hand[1] - py);
   }
 
   /**
    * Pulls each held point toward its place under the hand with its share of the cap (cap). Call before
-   * every step: the cap follows the patch as the sheet gives.
+   * every step with the step's `dt`, s (>= 0; 0, as moveTo does, leaves the hardening as it is): the cap
+   * follows the patch as the sheet gives, and a pull held past holdLead hardens.
    */
-  update(): void {
-    const o = this.options,
-      [x, y] = this.hand,
+  update(dt = 0): void {
+    const o = this.options;
+    if (dt > 0) {
+      const past = this.lead() - o.holdLead;
+      // Hardens while held far, and stays hard while the hand holds on (a rip runs on as the hand keeps pulling).
+      this.hardened = Math.max(0, Math.min(o.maxForce, this.hardened + o.hold * Math.max(0, past) * dt));
+    }
+    const [x, y] = this.hand,
       cap = this.cap();
     for (let i = 0; i < this.points.length; i++) {
       const h = this.points[i]!;

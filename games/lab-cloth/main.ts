@@ -267,8 +267,8 @@ function labStep(world: PhysicsWorld): void {
   if (heldForScissors()) return;
   // Still air for the scissors: the sheet's swing is damped too (not a gust the player blows).
   if (calm > 0 && blow === 0) dampSheet(world, Math.exp(-CALM_DAMPING * calm * world.dt));
-  // The hand's pull follows how far it leads the patch it holds (grab.ts).
-  grab?.update();
+  // The hand's pull follows how far it leads the patch it holds, and hardens while held far (grab.ts).
+  grab?.update(world.dt);
   const t0 = performance.now();
   physicsStep(world);
   stepMs = performance.now() - t0;
@@ -296,7 +296,7 @@ const game = await startPixiGame({
     { keys: 'G (hold)', action: 'a gust of wind', touch: 'Gust (hold)' },
     { keys: 'Right drag', action: 'cut, with either tool', touch: '' },
     { keys: 'Ctrl+Z', action: 'undo the last cut', touch: 'Undo' },
-    { keys: 'Paused', touch: 'Paused', action: 'the sheet holds still and the scissors still cut: a steady hand for ★★★' },
+    { keys: 'Paused', touch: 'Paused', action: 'the sheet holds still; the scissors still cut' },
   ],
   renderer: { view },
   onFrame: (alpha, world) => draw(alpha, world),
@@ -1098,9 +1098,12 @@ function draw(alpha: number, world: PhysicsWorld): void {
   readout.set(2, String(cut));
   readout.set(3, String(challenge.scraps));
   readout.set(4, `${fmt(sheet!.shownStretch * 100, 3)} %`);
+  // While the sheet holds still (the scissors down on a sheet for careful cuts, or paused) no step
+  // runs: the readout says so rather than showing the last step's figures, frozen.
+  const held = heldForScissors();
   windAt(world, 2, 3, 0, world.time, wind);
-  readout.set(5, `${fmt(wind[0]!, 2)} m/s`);
-  readout.set(6, `${fmt(stepMs, 3)} ms`);
+  readout.set(5, held ? 'still (scissors)' : `${fmt(wind[0]!, 2)} m/s`);
+  readout.set(6, held ? 'held (scissors)' : shell.paused ? 'paused' : `${fmt(stepMs, 3)} ms`);
 }
 shell.expose({
   params,

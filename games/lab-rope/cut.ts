@@ -97,3 +97,55 @@ export function cutRopes(
   }
   return out;
 }
+
+/**
+ * How far each cut end of a drawn rope piece is drawn short of the rope body it ends at, in cord
+ * widths: a cut leaves a gap of one link (0.125 m, about 12 px on a desktop) between the two pieces,
+ * which the cord's round caps (half a width and its outline each) and the frayed fibres (1.1 widths)
+ * filled, so the rope looked whole after a cut until its pieces swung apart. Drawn 2 widths short at
+ * each cut end, the gap shows at once, some 2 widths wider than the link.
+ */
+export const CUT_END_TRIM = 2;
+
+/**
+ * The polyline `pts` (x, y interleaved, at least two points) shortened by `start` along its length from
+ * its first point and by `end` from its last (each >= 0, px or m alike); a polyline shorter than
+ * start + end keeps a point where the two trims meet, in proportion. @returns a new array.
+ */
+export function trimPolyline(pts: readonly number[], start: number, end: number): number[] {
+  const n = pts.length / 2;
+  let total = 0;
+  for (let i = 1; i < n; i++) total += Math.hypot(pts[2 * i]! - pts[2 * i - 2]!, pts[2 * i + 1]! - pts[2 * i - 1]!);
+  if (start + end >= total) {
+    const s = start + end > 0 ? (total * start) / (start + end) : 0;
+    const p = pointAlong(pts, s);
+    return [p[0], p[1], p[0], p[1]];
+  }
+  const out: number[] = [];
+  const a = pointAlong(pts, start),
+    b = pointAlong(pts, total - end);
+  out.push(a[0], a[1]);
+  let d = 0;
+  for (let i = 1; i < n - 1; i++) {
+    d += Math.hypot(pts[2 * i]! - pts[2 * i - 2]!, pts[2 * i + 1]! - pts[2 * i - 1]!);
+    if (d > start && d < total - end) out.push(pts[2 * i]!, pts[2 * i + 1]!);
+  }
+  out.push(b[0], b[1]);
+  return out;
+}
+
+/** The point `s` along the polyline `pts` from its first point (clamped to its ends). */
+function pointAlong(pts: readonly number[], s: number): [number, number] {
+  const n = pts.length / 2;
+  for (let i = 1; i < n; i++) {
+    const x0 = pts[2 * i - 2]!,
+      y0 = pts[2 * i - 1]!,
+      len = Math.hypot(pts[2 * i]! - x0, pts[2 * i + 1]! - y0);
+    if (s <= len || i === n - 1) {
+      const f = len > 0 ? Math.min(1, Math.max(0, s / len)) : 0;
+      return [x0 + (pts[2 * i]! - x0) * f, y0 + (pts[2 * i + 1]! - y0) * f];
+    }
+    s -= len;
+  }
+  return [pts[0]!, pts[1]!];
+}

@@ -338,6 +338,9 @@ function cutBetween(x0: number, y0: number, x1: number, y1: number, reach: numbe
     y1,
     reach,
   );
+  // The cut is drawn in the very next frame, even where the frame pacer would skip it (the readout
+  // said "cuts 1" while the canvas still showed the rope whole).
+  if (made.length > 0) started.drawNext();
   for (const c of made) {
     spare.add(open[c.rope]!);
     cuts++;

@@ -10,6 +10,7 @@
 import { isAlive, type PhysicsWorld, slotOf } from '@bitphysics/physics';
 import type { Camera } from '@bitphysics/render-pixi';
 import { Container, Graphics, Sprite, Texture } from 'pixi.js';
+import { CUT_END_TRIM, trimPolyline } from './cut';
 import { BALL_RADIUS, type Level, type RopePiece, roomHalfWidth, WALL } from './scene';
 
 /** Rope thickness, m (drawn at least 4 px). */
@@ -176,7 +177,11 @@ export class RopeView {
         } else xs.push(nx, ny);
       }
       pieces.push({ pts: xs, cutStart, cutEnd: false });
-      for (const piece of pieces) if (piece.pts.length >= 4) this.drawCord(piece.pts, width, piece.cutStart, piece.cutEnd);
+      // A cut end is drawn short of its body (CUT_END_TRIM), so the cut shows as a gap at once.
+      const trim = CUT_END_TRIM * width;
+      for (const piece of pieces)
+        if (piece.pts.length >= 4)
+          this.drawCord(trimPolyline(piece.pts, piece.cutStart ? trim : 0, piece.cutEnd ? trim : 0), width, piece.cutStart, piece.cutEnd);
     }
     // Ball, and its shadow on the floor: wider and fainter the higher it is.
     const r = cam.toScreenLength(BALL_RADIUS);
@@ -373,6 +378,12 @@ export class RopeView {
       r = X(bx + half),
       t = Y(by + depth),
       b = Y(by);
+    // The open mouth, seen a little from above: a dark inside behind a back rim, its lower half hidden
+    // by the basket's side drawn over it (drawn side-on alone, a wide basket read as a shut crate).
+    const mouth = Math.min(S(0.3), (b - t) * 0.45);
+    g.ellipse((l + r) / 2, t, (r - l) / 2 + S(0.02), mouth)
+      .fill({ color: 0x3a2610 })
+      .stroke({ width: Math.max(2, S(0.05)), color: 0x8a5f26 });
     g.poly([l, t, r, t, r - S(0.06), b, l + S(0.06), b])
       .fill({ color: 0xb9853f })
       .stroke({ width: 2, color: 0x6e4a1c });

@@ -558,6 +558,7 @@ for (const [device, options] of [
         await g.page.evaluate(() => (window.game as unknown as Lab).world.time),
       ];
       const held: number[][] = [];
+      let info = '';
       const points = await clothPointsOnPage(g, ring);
       // Round the outline with the scissors (the sheet held still: the points read before stand),
       // straight from point to point; before they lift, the sheet is read twice, frames apart.
@@ -566,9 +567,12 @@ for (const [device, options] of [
         held.push(await sheetNow());
         await g.frames(4);
         held.push(await sheetNow());
+        info = await g.page.evaluate(() => document.querySelector('.bp-hud [data-lab="info"]')?.textContent ?? '');
       });
-      // Held still under the scissors: not a step (the clock stopped), not a point moved.
+      // Held still under the scissors: not a step (the clock stopped), not a point moved; the readout
+      // says the sheet is held rather than showing the last step's wind and step time, frozen.
       expect(held[1]).toEqual(held[0]);
+      expect(info).toMatch(/step time\s*held/);
       // Once the scissors lift the sheet runs on and the shape comes away.
       await g.runUntil(() => (window.game as unknown as ClothLab).cutOuts().length > 0 || null, null, { maxFrames: 1800 });
       const label = await g.waitFor(() => (window.game as unknown as ClothLab).labels()[0] ?? null, null);

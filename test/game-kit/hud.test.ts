@@ -34,4 +34,14 @@ describe('createHud', () => {
     expect(readout.children[1]!.textContent).toBe('60 fps');
     expect(readout.children[2]!.textContent).toBe('paused');
   });
+
+  it('shows a dash, not "0 fps", before the frame rate is measured', () => {
+    const doc = new FakeDocument();
+    vi.stubGlobal('document', doc);
+    const hud = createHud({ title: 'Test', controls: [], parent: doc.createElement('div') as unknown as HTMLElement });
+    const fps = (hud.readout as unknown as FakeElement).children[1]!;
+    expect(fps.textContent).toBe('– fps');
+    hud.update(30.2, 0, 1, false);
+    expect(fps.textContent).toBe('30 fps');
+  });
 });

@@ -5,7 +5,7 @@
  */
 import { isAlive, type PhysicsWorld, slotOf, step } from '@bitphysics/physics';
 import { describe, expect, it } from 'vitest';
-import { cutRopes } from '../../games/lab-rope/cut';
+import { CUT_END_TRIM, cutRopes, trimPolyline } from '../../games/lab-rope/cut';
 import {
   BALL_DRAG,
   BALL_MASS,
@@ -356,5 +356,25 @@ describe('lab-rope levels', () => {
     expect(Math.hypot(above[0] - below[0], above[1] - below[1])).toBeGreaterThan(1);
     const anchor = rope.anchor;
     expect(Math.hypot(above[0] - anchor[0], above[1] - anchor[1])).toBeLessThan(rope.links.length * 0.2);
+  });
+});
+
+describe('lab-rope cut ends', () => {
+  it('a cut end is drawn short of its body, so the gap a cut leaves shows at once', () => {
+    // A rope of 0.125 m links drawn 8.5 px wide at 100 px a metre (a desktop): the cut leaves 12.5 px
+    // between the pieces' bodies, which round caps (4.25 + 1.25 px each) and the fibres (1.1 widths)
+    // covered. Trimmed by CUT_END_TRIM widths each, the drawn ends are 12.5 + 4 widths apart.
+    const w = 8.5,
+      link = 12.5;
+    const upper = trimPolyline([0, 0, 0, 12.5, 0, 25], 0, CUT_END_TRIM * w);
+    const lower = trimPolyline([0, 25 + link, 0, 50 + link], CUT_END_TRIM * w, 0);
+    const gap = lower[1]! - upper[upper.length - 1]!;
+    expect(gap).toBeCloseTo(link + 2 * CUT_END_TRIM * w, 9);
+    // What still shows past the caps and the fibres: more than a cord's width.
+    expect(gap - 2 * (1.1 * w) - (w + 2.5)).toBeGreaterThan(w);
+    // Its other end stays; a bend keeps its middle point; a piece shorter than the trims keeps a point.
+    expect(upper).toEqual([0, 0, 0, 25 - CUT_END_TRIM * w]);
+    expect(trimPolyline([0, 0, 10, 0, 10, 10], 5, 5)).toEqual([5, 0, 10, 0, 10, 5]);
+    expect(trimPolyline([0, 0, 4, 0], 3, 1)).toEqual([3, 0, 3, 0]);
   });
 });

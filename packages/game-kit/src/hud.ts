@@ -58,7 +58,7 @@ export interface Hud {
   /** The legend element (bottom of the info column). */
   readonly legend: HTMLElement;
   /**
-   * Shows the numbers. @param fps frames per second (>= 0); @param bodies body count; @param steps
+   * Shows the numbers. @param fps frames per second (>= 0; 0, not measured yet, shows a dash); @param bodies body count; @param steps
    * steps of the current world; @param paused whether paused. Cheap when nothing changed.
    */
   update(fps: number, bodies: number, steps: number, paused: boolean): void;
@@ -224,7 +224,9 @@ export function createHud(options: HudOptions): Hud {
       const f = Math.round(fps);
       if (f !== shownFps) {
         shownFps = f;
-        fpsLine.textContent = `${f} fps`;
+        // 0 until the loop has measured its first half second: a dash, not a "0 fps" that reads as a
+        // stalled page.
+        fpsLine.textContent = f > 0 ? `${f} fps` : '– fps';
       }
       if (bodies !== shownBodies) {
         shownBodies = bodies;
