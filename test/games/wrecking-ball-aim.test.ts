@@ -8,17 +8,7 @@
 import { createPhysicsWorld, step } from '@bitphysics/physics';
 import { describe, expect, it } from 'vitest';
 import { buildWreckingBall, pullBack, scorePieces, swingSpeed, wreckingBallWorldOptions } from '../../games/wrecking-ball/scene';
-
-/** Pieces grouped by their start centre (within 2.5 m): the level's structures. */
-function groups<T extends { x0: number; z0: number }>(pieces: T[]): T[][] {
-  const out: T[][] = [];
-  for (const p of pieces) {
-    const g = out.find((q) => Math.hypot(q[0]!.x0 - p.x0, q[0]!.z0 - p.z0) < 2.5);
-    if (g) g.push(p);
-    else out.push([p]);
-  }
-  return out;
-}
+import { groups } from './wrecking-ball-structures';
 
 /**
  * Holds a drag on structure `s` of level `level` for 4 s, its direction `turn` degrees off the

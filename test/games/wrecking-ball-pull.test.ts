@@ -20,6 +20,7 @@ import {
   swingSpeed,
   wreckingBallWorldOptions,
 } from '../../games/wrecking-ball/scene';
+import { groups } from './wrecking-ball-structures';
 
 interface Gesture {
   level: number;
@@ -43,17 +44,6 @@ function gestures(): Gesture[] {
       for (const turn of [0, 40, -40]) out.push({ level, structure, turn, power: 1, hold: 1 });
       out.push({ level, structure, turn: 0, power: 0.5, hold: 1 });
     }
-  }
-  return out;
-}
-
-/** Pieces grouped by their start centre (within 2.5 m): the level's structures. */
-function groups<T extends { x0: number; z0: number }>(pieces: T[]): T[][] {
-  const out: T[][] = [];
-  for (const p of pieces) {
-    const g = out.find((q) => Math.hypot(q[0]!.x0 - p.x0, q[0]!.z0 - p.z0) < 2.5);
-    if (g) g.push(p);
-    else out.push([p]);
   }
   return out;
 }
