@@ -350,6 +350,24 @@ describe('projects', () => {
       expect(ways, seen.line).toEqual(ways.map((_, k) => (k % 2 === 0 ? 'going out' : 'coming in')));
     }
     expect(crossings).toBeGreaterThan(3);
+    // Wait held: time runs and the tags still name the day the line gives (a stranger holding W on
+    // the Venus mission lost "Venus on day N", the guidance the wait is for, while time ran).
+    type Running = { rate(): { days: number } };
+    const lineBefore = (await g.page.locator('[data-hud="plan"]').textContent()) ?? '';
+    await g.page.keyboard.down('w');
+    const waited = await g.waitFor((before) => {
+      // Time runs and the line names a new day (a forecast from a later launch day is drawn).
+      if ((window.game as unknown as Running).rate().days <= 0) return null;
+      const line = document.querySelector('[data-hud="plan"]')?.textContent ?? '';
+      const day = line.match(/is at Mars’s orbit on day (\d+)/)?.[1];
+      if (!day || day === before.match(/is at Mars’s orbit on day (\d+)/)?.[1]) return null;
+      const tag = (n: string) => document.querySelector<HTMLElement>(`[data-tag="${n}"]`);
+      const shown = ['target-then', 'probe-then'].map((n) => (tag(n)?.style.display === 'none' ? null : tag(n)?.textContent));
+      // The tags follow at the next frame drawn.
+      return shown[0] === `Mars on day ${day}` ? { line, shown, day } : null;
+    }, lineBefore);
+    await g.page.keyboard.up('w');
+    expect(waited.shown, waited.line).toEqual([`Mars on day ${waited.day}`, `probe on day ${waited.day}`]);
     // Mission 4 started, then the page reloaded: mission 4 again (it went back to mission 1).
     await g.page.evaluate(() => (window.game as unknown as Solar).startMission(3));
     await g.page.reload();
