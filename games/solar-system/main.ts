@@ -710,6 +710,8 @@ function turn(degrees: number): void {
   a = ((((a + 180) % 360) + 360) % 360) - 180;
   aim.angle = a === -180 ? 180 : Math.round(a * 10) / 10;
   aimChangedAt = performance.now();
+  // The line reads the new aim at once, not at the next frame (key presses between frames showed late).
+  updateStatus();
 }
 
 function changeSpeed(kms: number): void {
@@ -720,6 +722,7 @@ function changeSpeed(kms: number): void {
   if (phase !== 'aim') return;
   aim.speed = Math.min(MAX_SPEED, Math.max(0, Math.round((aim.speed + kms) * 10) / 10));
   aimChangedAt = performance.now();
+  updateStatus();
 }
 
 // ---- The page ---------------------------------------------------------------------------------------
@@ -2381,8 +2384,12 @@ function updateStatus(force = false): void {
     cls = '';
   if (phase === 'aim') {
     const head = `Launch ${aim.speed.toFixed(1)} km/s ${aimWords(aim.angle)} →`;
-    if (forecastKey === '') line = `${head} …`;
-    else if (forecastKey !== drawnForecastKey && shownPlan[0] !== '') [line, cls] = shownPlan;
+    // The speed and direction read at once; a new aim's words read "…" until its forecast is
+    // worked out and drawn (the last aim's words under the new speed named a day not its own).
+    const stale = keyBase(forecastKey) !== keyBase(wantedKey());
+    if (forecastKey === '' || stale) line = `${head} …`;
+    else if (forecastKey !== drawnForecastKey && shownPlan[0] !== '')
+      [line, cls] = shownPlan[0].startsWith(`${head} `) ? shownPlan : [`${head} …`, ''];
     else {
       const [words, c] = verdict(m);
       line = `${head} ${words}`;
