@@ -34,7 +34,7 @@
  * camera sits close behind and widens its view with speed, so the speed shows.
  * Keys: arrows or W/S/A/D: climb / dive and bank (with "pilot's pitch" in the panel, down pulls up),
  * ramped (./assist.ts rampKey: a tap is a small correction; climb and dive grow slowly at first to full
- * stick after 0.4 s held, the bank keys start at 0.45 of full stick (BANK_KEY_RAMP) and are full after 0.23 s);
+ * stick after 0.4 s held, the bank keys start at 0.2 of full stick (BANK_KEY_RAMP) and are full after 1.2 s);
  * Q / E: rudder; X / Z (or Shift, + / -): faster / slower (the throttle: the only input that moves it;
  * a press steps it a tenth at once, held it goes on: ./assist.ts throttleStep; no Ctrl, which with W
  * closes the browser's tab);
@@ -1309,7 +1309,7 @@ function drawCockpit(on: boolean, i: ReturnType<typeof instruments>): void {
  * the scene.
  */
 const ringPointer = overlay(
-  'padding: 2px 8px; border-radius: 10px; background: rgba(10, 14, 22, 0.85); color: #ffcf5a; font: 700 14px system-ui, sans-serif; white-space: nowrap;',
+  `padding: 2px 8px; border-radius: 10px; background: rgba(10, 14, 22, 0.85); color: #ffcf5a; font: 700 ${compact ? 15 : 16}px system-ui, sans-serif; white-space: nowrap;`,
 );
 ringPointer.dataset.hud = 'ring-pointer';
 /**
@@ -1448,7 +1448,7 @@ function pointToNextRing(): void {
   const lost = !ringAim.inView ? 'true' : 'false';
   if (ringPointer.dataset.lost !== lost) {
     ringPointer.dataset.lost = lost;
-    ringPointer.style.fontSize = ringAim.inView ? '' : '16px';
+    ringPointer.style.fontSize = ringAim.inView ? '' : `${compact ? 16 : 18}px`;
     ringPointer.style.boxShadow = ringAim.inView ? '' : 'inset 0 0 0 2px #ffcf5a';
   }
   if (ringPointer.textContent !== ringAim.text) ringPointer.textContent = ringAim.text;

@@ -676,6 +676,8 @@ function turn(degrees: number): void {
   a = ((((a + 180) % 360) + 360) % 360) - 180;
   aim.angle = a === -180 ? 180 : Math.round(a * 10) / 10;
   aimChangedAt = performance.now();
+  // The line reads the new aim at once, not at the next frame (key presses between frames showed late).
+  updateStatus();
 }
 
 function changeSpeed(kms: number): void {
@@ -686,6 +688,7 @@ function changeSpeed(kms: number): void {
   if (phase !== 'aim') return;
   aim.speed = Math.min(MAX_SPEED, Math.max(0, Math.round((aim.speed + kms) * 10) / 10));
   aimChangedAt = performance.now();
+  updateStatus();
 }
 
 // ---- The page ---------------------------------------------------------------------------------------
@@ -1770,8 +1773,10 @@ function drawLaunch(world: PhysicsWorld): void {
     // Named while aiming: the ring is where the target will be, the white dot where the probe is then.
     v.set(scratch3[0]!, scratch3[1]!, scratch3[2]!);
     const ringPx = (zone * app.canvas.clientHeight) / (2 * app.camera.position.distanceTo(v) * Math.tan((app.camera.fov * Math.PI) / 360));
-    // Not while time runs (the forecast drawn lags the moment; the names would jump about).
-    const tagged = aiming && !sun && currentRate() === 0;
+    // Named while time runs too (Wait held): the player waits for the target's dots to end where
+    // the probe's do, so the days named are the guidance then; they are the drawn forecast's, as
+    // the dots and the line are.
+    const tagged = aiming && !sun;
     v.project(app.camera);
     ghostOnScreen[0] = ((v.x + 1) / 2) * app.canvas.clientWidth;
     ghostOnScreen[1] = ((1 - v.y) / 2) * app.canvas.clientHeight;
@@ -1925,7 +1930,14 @@ style.textContent = `
 .ss-status .ss-line.won { color: #7ee787; font-weight: 700; }
 .ss-status .ss-date { color: #b8c4d6; font-size: 12px; }
 /* The hint's line is kept (empty) when the hint is off, so pressing Hint does not move the stage. */
-.ss-status .ss-hint { color: #9fd3ff; font-style: italic; min-height: 1.4em; }
+.ss-status .ss-hint { color: #9fd3ff; font-weight: 600; min-height: 1.4em; }
+/* A desktop: 14 px lines at most 760 px long (a 1,000 px line at 13 px was hard to follow). */
+@media (min-width: 441px) {
+  .ss-status { font-size: 14px; }
+  .ss-status .ss-goal { font-size: 15px; }
+  .ss-status .ss-brief, .ss-status .ss-date { font-size: 13px; }
+  .ss-status > div { max-width: 760px; margin: 0 auto; }
+}
 .ss-pad button.ss-hint-button.ss-pulse { animation: ss-pulse 1.2s ease-in-out infinite; }
 .ss-arrival { position: absolute; z-index: 3; left: 0; right: 0; top: 4%; padding: 10px 0; text-align: center;
   background: radial-gradient(ellipse at center, rgba(2, 3, 8, 0.75), rgba(2, 3, 8, 0) 70%); font: 700 28px system-ui, sans-serif;
@@ -2338,8 +2350,12 @@ function updateStatus(force = false): void {
     cls = '';
   if (phase === 'aim') {
     const head = `Launch ${aim.speed.toFixed(1)} km/s ${aimWords(aim.angle)} →`;
-    if (forecastKey === '') line = `${head} …`;
-    else if (forecastKey !== drawnForecastKey && shownPlan[0] !== '') [line, cls] = shownPlan;
+    // The speed and direction read at once; a new aim's words read "…" until its forecast is
+    // worked out and drawn (the last aim's words under the new speed named a day not its own).
+    const stale = keyBase(forecastKey) !== keyBase(wantedKey());
+    if (forecastKey === '' || stale) line = `${head} …`;
+    else if (forecastKey !== drawnForecastKey && shownPlan[0] !== '')
+      [line, cls] = shownPlan[0].startsWith(`${head} `) ? shownPlan : [`${head} …`, ''];
     else {
       const [words, c] = verdict(m);
       line = `${head} ${words}`;

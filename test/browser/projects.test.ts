@@ -199,7 +199,7 @@ describe('projects', () => {
 
   it('solar-system: the ring "at arrival" is the real zone and the line the real verdict: the white dot is inside the ring exactly when the line says ✓, and a ✓ launch arrives', async () => {
     const g = await h.openGame('solar-system', { viewport: { width: 1280, height: 800 }, query: { rate: 0, verdict: 1 } });
-    type Plan = { hit: boolean; distance: number; current: boolean; key: string };
+    type Plan = { hit: boolean; distance: number; current: boolean; shown: boolean; key: string };
     type Ghost = { key: string; visible: boolean; ring: [number, number][]; dot: [number, number] };
     type Solar = {
       mission(): { phase: string; plan: Plan; flight: { burns: number } | null };
@@ -252,7 +252,7 @@ describe('projects', () => {
             const plan = game.mission().plan;
             const ghost = game.ghost();
             const line = document.querySelector('[data-hud="plan"]')?.textContent ?? '';
-            return plan.current && ghost.key === plan.key && line.startsWith(head) ? { plan, ghost, line } : null;
+            return plan.current && plan.shown && ghost.key === plan.key && line.startsWith(head) ? { plan, ghost, line } : null;
           },
           `Launch ${speed.toFixed(1)} km/s ${angle === 180 ? 'against' : `${angle}°`}`,
         );
@@ -329,7 +329,8 @@ describe('projects', () => {
       const seen = await g.waitFor(
         (head) => {
           const line = document.querySelector('[data-hud="plan"]')?.textContent ?? '';
-          if (!line.startsWith(head) || !(window.game as unknown as Aiming).mission().plan.shown) return null;
+          // The new aim's words (until its forecast is drawn the line reads "head …").
+          if (!line.startsWith(head) || line.endsWith(' …') || !(window.game as unknown as Aiming).mission().plan.shown) return null;
           const tag = (n: string) => {
             const el = document.querySelector<HTMLElement>(`[data-tag="${n}"]`);
             return el && el.style.display !== 'none' ? el.textContent : null;
@@ -350,6 +351,33 @@ describe('projects', () => {
       expect(ways, seen.line).toEqual(ways.map((_, k) => (k % 2 === 0 ? 'going out' : 'coming in')));
     }
     expect(crossings).toBeGreaterThan(3);
+    // Wait held: time runs and the tags still name the day the line gives (a stranger holding W on
+    // the Venus mission lost "Venus on day N", the guidance the wait is for, while time ran).
+    type Running = { rate(): { days: number } };
+    const lineBefore = (await g.page.locator('[data-hud="plan"]').textContent()) ?? '';
+    await g.page.keyboard.down('w');
+    const waited = await g.waitFor((before) => {
+      // Time runs and the line names a new day (a forecast from a later launch day is drawn).
+      if ((window.game as unknown as Running).rate().days <= 0) return null;
+      const line = document.querySelector('[data-hud="plan"]')?.textContent ?? '';
+      const day = line.match(/is at Mars’s orbit on day (\d+)/)?.[1];
+      if (!day || day === before.match(/is at Mars’s orbit on day (\d+)/)?.[1]) return null;
+      const tag = (n: string) => document.querySelector<HTMLElement>(`[data-tag="${n}"]`);
+      const shown = ['target-then', 'probe-then'].map((n) => (tag(n)?.style.display === 'none' ? null : tag(n)?.textContent));
+      // The tags follow at the next frame drawn.
+      return shown[0] === `Mars on day ${day}` ? { line, shown, day } : null;
+    }, lineBefore);
+    await g.page.keyboard.up('w');
+    expect(waited.shown, waited.line).toEqual([`Mars on day ${waited.day}`, `probe on day ${waited.day}`]);
+    // A press reads in the line at once, in the same task (it waited for the next frame, and a
+    // stranger's fourth press showed 2.4 km/s over a page already at 2.6); its words "…" until the
+    // new aim's forecast is drawn, never the last aim's day under the new speed.
+    const pressed = await g.page.evaluate(() => {
+      const speed = (window.game as unknown as Aiming).mission().aim.speed;
+      for (const type of ['keydown', 'keyup']) document.body.dispatchEvent(new KeyboardEvent(type, { key: 'ArrowUp', bubbles: true }));
+      return { speed, line: document.querySelector('[data-hud="plan"]')?.textContent ?? '' };
+    });
+    expect(pressed.line).toBe(`Launch ${(pressed.speed + 0.1).toFixed(1)} km/s along the Earth’s path → …`);
     // Mission 4 started, then the page reloaded: mission 4 again (it went back to mission 1).
     await g.page.evaluate(() => (window.game as unknown as Solar).startMission(3));
     await g.page.reload();
