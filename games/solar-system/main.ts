@@ -567,6 +567,16 @@ function updateForecast(now = false): boolean {
   return forecastKey === key;
 }
 
+/**
+ * A player's launch (Space, the Launch button): it also ends a pause, since a player who asks for
+ * the launch wants to see it fly (paused, the probe sat at day 0 with only "paused" in the status
+ * line to say why). The test hook `launch` keeps the pause.
+ */
+function playerLaunch(): void {
+  if (phase === 'aim' && shell.paused) shell.paused = false;
+  launch();
+}
+
 /** Launches the probe with the current aim (Space, the Launch button). No effect unless aiming. */
 function launch(): void {
   if (phase !== 'aim') return;
@@ -714,7 +724,7 @@ const game = await startThreeGame({
     { key: 'ArrowRight', label: 'turn right', action: () => turn(TURN_STEP), repeat: true },
     { key: 'ArrowUp', label: 'faster launch', action: () => changeSpeed(SPEED_STEP), repeat: true },
     { key: 'ArrowDown', label: 'slower launch', action: () => changeSpeed(-SPEED_STEP), repeat: true },
-    { key: ' ', label: 'launch', action: () => launch() },
+    { key: ' ', label: 'launch', action: () => playerLaunch() },
     { key: 'Enter', label: 'next / try again', action: () => advance() },
     { key: 'h', label: 'hint', action: () => toggleHint() },
     { key: 't', label: 'try again', action: () => retry() },
@@ -2058,7 +2068,7 @@ function toggleHint(): void {
 const pad = createButtonBar(
   [
     ...PAD.map((b) => ({ label: b.label, name: b.name, onPress: () => holdRepeat(b.press), onRelease: stopRepeat })),
-    { label: 'Launch', name: 'launch the probe (Space)', onTap: () => launch() },
+    { label: 'Launch', name: 'launch the probe (Space)', onTap: () => playerLaunch() },
     {
       label: 'Wait',
       name: 'wait: hold to run time, tap for 10 days (W)',

@@ -1303,7 +1303,11 @@ describe('phone controls', () => {
           .sort((a, b) => a.x - b.x),
       ) as Promise<{ pad: string; x: number; y: number; width: number; height: number }[]>;
     const aimBar = await bar();
+    // Launch from a paused game flies: the tap ends the pause (it sat at day 0, paused, for 38 s).
+    await g.page.getByRole('button', { name: 'pause / resume (P)', exact: true }).tap();
+    expect(await g.page.evaluate(() => (window.game as unknown as { paused: boolean }).paused)).toBe(true);
     await g.page.getByRole('button', { name: 'launch the probe (Space)', exact: true }).tap();
+    expect(await g.page.evaluate(() => (window.game as unknown as { paused: boolean }).paused)).toBe(false);
     await g.waitFor(() => {
       const m = (window.game as unknown as Solar).mission();
       return m.phase === 'flight' && m.flight!.elapsed > 1;
