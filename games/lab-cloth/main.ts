@@ -39,7 +39,7 @@ import { fabricTexture } from './fabric';
 import { ClothGrab, gripFor } from './grab';
 import { LEVELS } from './levels';
 import { Challenge, type CutOut } from './pattern';
-import { browserStore, loadProgress, passMark, saveProgress } from './progress';
+import { browserStore, loadProgress, passMark, recordBest, saveProgress } from './progress';
 import { applyWind, CLOTH_SUBSTEPS, createClothScene, DEFAULTS, LINE_Y, SHEET_WIDTH, SHEET_X, sheetGrid, YARD } from './scene';
 import { SheetView } from './sheet-view';
 import { CutUndo } from './undo';
@@ -62,6 +62,10 @@ const store = browserStore();
 const levelStars = loadProgress(store, LEVELS.length);
 /** Whether sheet `i` (0-based) was passed: its best stars reach its pass mark (progress.ts passMark). */
 const passed = (i: number): boolean => levelStars[i]! >= passMark(LEVELS[i]!.shapes(DEFAULTS.size).length);
+// A failure kept by an older page (below the pass mark) is no best: the sheet counts as not finished.
+levelStars.forEach((_, i) => {
+  if (!passed(i)) levelStars[i] = -1;
+});
 /**
  * Which of LEVELS is up (0-based): ?level (1 to 4); without it the first sheet not passed yet (kept
  * over a reload), the first when every one is.
@@ -506,9 +510,16 @@ const labelUndo = (): void => {
 narrow.addEventListener('change', labelUndo);
 labelUndo();
 /**
- * Picks a tool (on a level without scissors the hand stays: the scissors' button is greyed out).
+ * The tool the player last picked on this sheet, and the sheet (LEVELS index) it was picked on: a
+ * reset (R, Try again) keeps it; a new sheet starts with the scissors (where it has them).
+ */
+let chosen: { tool: Tool; level: number } = { tool: 'cut', level: -1 };
+/**
+ * Picks a tool (on a level without scissors the hand stays: the scissors' button is greyed out) and
+ * remembers it as the player's choice on this sheet.
  */
 function setTool(t: Tool): void {
+  chosen = { tool: t, level: levelIndex };
   if (t === 'cut' && !LEVELS[levelIndex]!.scissors) t = 'pull';
   tool = t;
   tools.setActive(0, t === 'cut');
@@ -521,14 +532,17 @@ function setBlowing(on: boolean): void {
   if (on && !blowing) sound.launch(0.7);
   blowing = on;
 }
-/** Greys the scissors out on a level without them (and takes the hand), or gives them back. */
+/**
+ * Greys the scissors out on a level without them (and takes the hand), or gives them back; picks the
+ * tool the player chose on this sheet (a reset keeps it), the scissors on a new one.
+ */
 function refreshTools(): void {
   const ok = LEVELS[levelIndex]!.scissors;
   const b = tools.buttons[0]!;
   b.disabled = !ok;
   b.style.opacity = ok ? '' : '0.45';
   b.title = ok ? '' : 'no scissors on this sheet: tear it';
-  setTool(ok ? 'cut' : 'pull');
+  setTool(chosen.level === levelIndex ? chosen.tool : 'cut');
 }
 refreshTools();
 window.addEventListener('keydown', (e) => {
@@ -824,9 +838,15 @@ function drawSlash(now: number): void {
   }
 }
 
-/** Places the floating labels (a dropped piece's rising as it fades; a cut-out's over the line, still) and fades them. */
+/**
+ * Places the floating labels (a dropped piece's rising as it fades; a cut-out's over the line, still;
+ * each under the action button while it shows) and fades them.
+ */
 function drawLabels(now: number): void {
   const cam = renderer.camera;
+  const button = labels.length > 0 ? document.querySelector('.bp-action button')?.getBoundingClientRect() : undefined;
+  /** The lowest a label's top may be kept above, CSS px on the canvas: 6 px under the action button, if shown. */
+  const under = button ? button.bottom - app.canvas.getBoundingClientRect().top + 6 : 0;
   for (let i = labels.length - 1; i >= 0; i--) {
     const l = labels[i]!;
     const age = now - l.born;
@@ -837,9 +857,11 @@ function drawLabels(now: number): void {
     }
     const half = l.text.width / 2 + 6;
     l.text.x = Math.min(Math.max(cam.toScreenX(l.x), half), cam.width - half);
+    // Under the action button while it shows at the top (it covered the last sheet's "Strip: 96%").
+    const top = Math.max(LABEL_TOP, under + l.text.height);
     l.text.y = Number.isNaN(l.y)
-      ? Math.max(cam.toScreenY(LINE_Y) - LABEL_OVER_LINE, LABEL_TOP)
-      : Math.max(cam.toScreenY(l.y) - 30 * age, LABEL_TOP + 8);
+      ? Math.max(cam.toScreenY(LINE_Y) - LABEL_OVER_LINE, top)
+      : Math.max(cam.toScreenY(l.y) - 30 * age, top + 8);
     l.text.alpha = Math.min(1, 3 * (1 - age / LABEL_LIFE));
   }
 }
@@ -953,13 +975,10 @@ function updateStatus(): void {
   if (challenge.finished()) {
     const won = challenge.stars(),
       need = passMark(shapes.length);
-    if (won > levelStars[levelIndex]!) {
-      levelStars[levelIndex] = won;
-      saveProgress(store, levelStars);
-    }
     const last = levelIndex === LEVELS.length - 1;
     const missed = done.some((d) => d.drop === 'out');
     failed = missed || won < need;
+    if (recordBest(levelStars, levelIndex, won, !failed)) saveProgress(store, levelStars);
     status.set(
       missed
         ? `${head}: ${short('the peg bag missed the basket. Undo (↶) and cut again, or try again.', 'missed the basket. Undo (↶) or try again.')}`

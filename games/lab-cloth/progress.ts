@@ -56,3 +56,14 @@ export function loadProgress(store: ProgressStore | null, levels: number): numbe
 export function saveProgress(store: ProgressStore | null, best: readonly number[]): boolean {
   return progressIn(store, best.length).write(best.slice());
 }
+
+/**
+ * Records `won` stars on sheet `i` in `best` (as loadProgress returns them) if the sheet was passed
+ * (`passed`) with more stars than its best so far: a failure is never a best (a stranger who
+ * failed the window saw "Best 0/12 ★"). @returns whether `best` changed (then save it).
+ */
+export function recordBest(best: number[], i: number, won: number, passed: boolean): boolean {
+  if (!passed || !(won > best[i]!)) return false;
+  best[i] = won;
+  return true;
+}

@@ -88,12 +88,13 @@ const misses = LEVELS.map(() => 0);
 /**
  * Whether the flight hint shows: a faint dotted path of where the ball would fly if the last rope
  * holding it were cut now (scene.ts predictFlight), so a player sees the timing instead of guessing
- * it. On the first level from the start; on the others once the player has missed there (a level's
- * first try is theirs to read alone). Shown only while exactly one rope holds the ball: with two, a
- * cut does not let it fly.
+ * it. On the first two levels from the start (the second's swing on its last rope is new, and
+ * without the dots it was a steep step from the first); on the others once the player has missed
+ * there (a level's first try is theirs to read alone). Shown only while exactly one rope holds the
+ * ball: with two, a cut does not let it fly.
  */
 function flightHintOn(): boolean {
-  return game.outcome === 'playing' && game.holding() === 1 && (params.level === 1 || misses[params.level - 1]! > 0);
+  return game.outcome === 'playing' && game.holding() === 1 && (params.level <= 2 || misses[params.level - 1]! > 0);
 }
 /** The flight hint's path as last drawn (x, y pairs, m; empty while hidden), and whether it ends in the basket. */
 const flight: number[] = [];
@@ -111,7 +112,7 @@ let lostAt = Number.NaN;
  */
 const MISS_TAP_AFTER = 0.4;
 /** The miss banner's second line: a tap on a touch screen, a click (or Space) elsewhere. */
-const MISS_HINT = matchMedia('(pointer: coarse)').matches ? '\ntap to try again' : '\nclick to try again';
+const MISS_HINT = matchMedia('(pointer: coarse)').matches ? '\ntap to try again' : '\nclick or R to try again';
 /** Starts the level again at once after a miss (a tap or key during the pause); false otherwise. */
 function retryAfterMiss(): boolean {
   if (game.outcome !== 'lost' || performance.now() / 1000 - lostAt < MISS_TAP_AFTER) return false;
@@ -294,6 +295,8 @@ plot = createPlot({
 
 const status = createStatusLine();
 const showNext = createActionButton('Next level ▶', () => nextLevel());
+/** The miss card's button: starts the level again (as R, or a tap on the scene, does). */
+const showRetry = createActionButton('Try again ↺', () => shell.reset());
 
 // Input: a press on (or near) the ball pushes it; elsewhere a swipe cuts the ropes it crosses, and a
 // tap cuts the rope nearest to it.
@@ -645,7 +648,7 @@ function drawHintCaption(cam: typeof renderer.camera, now: number): void {
   if (Number.isNaN(hintShownAt[k]!)) hintShownAt[k] = now;
   const age = now - hintShownAt[k]!;
   if (age >= HINT_CAPTION_S) return;
-  const text = `${params.level === 1 ? '' : 'Hint unlocked! '}• • • dots: where the ball flies if you cut now`;
+  const text = `${params.level <= 2 ? '' : 'Hint unlocked! '}• • • dots: where the ball flies if you cut now`;
   if (hintCaption.text !== text) hintCaption.text = text;
   hintCaption.style.wordWrapWidth = Math.max(160, cam.width - 24);
   // Centred at the top of the scene, over the beam, where no star, rope or basket lies (beside the
@@ -721,10 +724,11 @@ function bannerHeightWithGap(gap: number): number {
 }
 
 /**
- * Puts the "Next level" button in the middle of the scene, its top `top` px under the canvas's top
- * (just under the win banner's row of stars): the win reads as one card, the button under the
- * message in reach of a thumb (in a bottom corner, away from the basket, a stranger on a phone
- * took it for part of the floor and missed the win). The banner stands clear of the basket.
+ * Puts the action button shown ("Next level" after a win, "Try again" after a miss) in the middle of
+ * the scene, its top `top` px under the canvas's top (just under the win banner's row of stars, or
+ * under the miss card): the outcome reads as one card, the button under the message in reach of a
+ * thumb (in a bottom corner, away from the basket, a stranger on a phone took it for part of the
+ * floor and missed the win). The banner stands clear of the basket.
  */
 function placeNext(top: number): void {
   const bar = document.querySelector<HTMLElement>('.bp-action');
@@ -773,6 +777,7 @@ function drawBanner(now: number): void {
     const last = params.level === LEVELS.length;
     setBanner(last ? 'All levels done!' : 'In the basket!', 0x9ff0b8, 1);
     showStars(banner.x, starsY, s, scene.level.stars.length, 1);
+    showRetry(false);
     showNext(true, last ? 'Play again ▶' : 'Next level ▶');
     placeNext(starsY + STAR_SIZE * 0.6 + 12);
     return;
@@ -805,8 +810,12 @@ function drawBanner(now: number): void {
       .fill({ color: 0x101828, alpha: 0.85 * fade })
       .stroke({ width: 3, color: 0xff6b5a, alpha: fade });
     showStars(x0 + w - 20 - rowW / 2, banner.y, game.stars(), n, 1, MISS_STAR_SCALE);
+    // The button under the card, or over it where the card reaches the canvas's foot.
+    showRetry(true);
+    placeNext(y0 + h + 70 <= cam.height ? y0 + h + 10 : Math.max(0, y0 - 62));
     return;
   }
+  showRetry(false);
   missCard = null;
   showStars(0, 0, 0, 0, 0);
   const t = shell.world.time;

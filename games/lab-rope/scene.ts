@@ -9,7 +9,7 @@
  *
  * The ball is in the basket once its centre is inside the basket's walls and below their tops while it
  * is almost still (RopeGame.update); it is lost once it rests anywhere else, rolls on the floor
- * outside the basket, has been free for FREE_LOST s, or leaves the level.
+ * outside the basket, has been down on the floor outside it for LANDED_LOST s, has been free for FREE_LOST s, or leaves the level.
  */
 import {
   addBody,
@@ -511,6 +511,16 @@ export function cutRope(world: PhysicsWorld, rope: RopePiece, link: number): voi
  */
 export const FLOOR_LOST = 0.5;
 /**
+ * Seconds after the free ball first comes down to the floor outside the basket (its centre within
+ * LOW_REACH of it: on the floor, or on a cut rope lying there) before the try is lost, however it
+ * bounces or jiggles since: a bounce off the floor rises under 0.6 m, too little to clear a basket
+ * wall, so nothing brings it back in. Bounces reset FLOOR_LOST's count, and a ball lying on a
+ * rope piece never settled under it: a miss sat on the floor 3 s before its card showed.
+ */
+export const LANDED_LOST = 1.2;
+/** How far above lying on the floor the ball's centre may be and still count as down (a rope piece under it), m. */
+export const LOW_REACH = 0.12;
+/**
  * Time constant, s, of the basket's lining: a free ball in the basket's opening loses its speed as
  * exp(-t / NET_TIME). A ball dropping in fast across the basket struck its far wall's top and
  * bounced out over it (level 1, a cut 1.94 s in, between cuts at 1.9 and 2.0 s that won): whether a
@@ -536,6 +546,8 @@ export class RopeGame {
   /** Seconds the free ball has lain on the floor outside the basket, and been free at all. */
   private floored = 0;
   private free = 0;
+  /** Seconds since the free ball first came down to the floor outside the basket; NaN until it has. */
+  private landed = Number.NaN;
 
   constructor(readonly scene: RopeScene) {
     this.caught = scene.level.stars.map(() => false);
@@ -592,11 +604,14 @@ export class RopeGame {
     }
     // On the floor outside the basket (its walls stand up from the floor): nothing brings it back in.
     this.floored = free && !inside && !onRim && y < BALL_RADIUS + 0.03 ? this.floored + world.dt : 0;
+    if (!Number.isNaN(this.landed)) this.landed += world.dt;
+    else if (free && !inside && !onRim && y < BALL_RADIUS + LOW_REACH) this.landed = 0;
     if ((inside || onRim) && this.still > 0.3) this.outcome = 'won';
     else if (
       free &&
       (this.still > 0.6 ||
         this.floored > FLOOR_LOST ||
+        this.landed > LANDED_LOST ||
         this.free > FREE_LOST ||
         y < -2 ||
         x < level.view.minX - 3 ||

@@ -311,6 +311,13 @@ for (const [device, options] of [
       await g.page.evaluate(() => (window.game as unknown as { reset(): void }).reset());
       await press(g.page, 'hand: drag to pull (C)');
       expect(await g.page.evaluate(() => (window.game as unknown as ClothLab).tool())).toBe('pull');
+      // R hangs the sheet again and keeps the hand (it used to give the scissors back unasked).
+      await g.page.evaluate(() => {
+        (window as unknown as { world0: unknown }).world0 = (window.game as unknown as Lab).world;
+      });
+      await g.page.keyboard.press('r');
+      await g.waitFor(() => (window.game as unknown as Lab).world !== (window as unknown as { world0: unknown }).world0, null);
+      expect(await g.page.evaluate(() => (window.game as unknown as ClothLab).tool())).toBe('pull');
       await g.page.evaluate(() => {
         (window.game as unknown as Lab).paused = true;
       });
@@ -717,6 +724,24 @@ for (const [device, options] of [
       const strip = (await g.page.evaluate(() => (window.game as unknown as ClothLab).cutOuts()))[0]!;
       expect(strip.shape).toBe('strip');
       expect(strip.fit).toBeGreaterThan(0.6);
+      // The last sheet done: its button ("Start again ▶", or "Try again ↺") covers nothing of the
+      // strip's label ("Strip: 96%" and its stars; the button covered it).
+      await g.waitFor(() => document.querySelector('.bp-action button') !== null, null);
+      await g.frames(2);
+      const ends = await g.page.evaluate(() => {
+        const b = document.querySelector('.bp-action button')!.getBoundingClientRect();
+        const c = document.querySelector('canvas')!.getBoundingClientRect();
+        return {
+          button: [b.left - c.left, b.top - c.top, b.right - c.left, b.bottom - c.top],
+          labels: (window.game as unknown as ClothLab).labels(),
+        };
+      });
+      expect(ends.labels.length).toBeGreaterThan(0);
+      for (const l of ends.labels) {
+        const [x0, y0, x1, y1] = ends.button;
+        const clear = l.x >= x1! || l.x + l.width <= x0! || l.y >= y1! || l.y + l.height <= y0!;
+        expect(clear, JSON.stringify(ends)).toBe(true);
+      }
       expect(g.errors).toEqual([]);
       await g.close();
     });
@@ -828,7 +853,7 @@ for (const [device, options] of [
       expect(lost.outcome).toBe('lost');
       await g.waitFor(() => (window.game as unknown as RopeLab).banner().text.startsWith('Missed!'), null);
       const shown = await g.page.evaluate(() => (window.game as unknown as RopeLab).banner());
-      expect(shown.text).toBe(`Missed!\n${device === 'phone' ? 'tap' : 'click'} to try again`);
+      expect(shown.text).toBe(`Missed!\n${device === 'phone' ? 'tap' : 'click or R'} to try again`);
       expect(shown.stars).toEqual([lost.stars, 3]);
       // The card (drawn round the text and the star row beside it) is small and stands clear of the
       // basket, of the ball beside it and of every star not caught, so the player sees why it missed
@@ -865,6 +890,16 @@ for (const [device, options] of [
       for (const star of card.stars) expect(apart(card.card, star), `card ${card.card}, star ${star}`).toBe(true);
       // Two lines of text: at most 100 px tall (the card of before, text over a star row, was 160).
       expect(card.height).toBeLessThanOrEqual(100);
+      // A Try again button stands by the card (under it), clear of the card and the ball.
+      const retry = await g.page.evaluate(() => {
+        const b = document.querySelector<HTMLElement>('.bp-action button');
+        const c = document.querySelector('canvas')!.getBoundingClientRect();
+        const r = b?.getBoundingClientRect();
+        return b && r ? { text: b.textContent, box: [r.left - c.left, r.top - c.top, r.right - c.left, r.bottom - c.top] } : null;
+      });
+      expect(retry?.text).toBe('Try again ↺');
+      expect(apart(retry!.box, card.card)).toBe(true);
+      expect(apart(retry!.box, card.ball)).toBe(true);
       await g.page.waitForTimeout(450); // a tap counts 0.4 s after the miss (not the swipe that missed)
       const mid = await toPage(g, 0, 4);
       if (device === 'phone') await g.page.touchscreen.tap(mid.x, mid.y);
@@ -1126,7 +1161,7 @@ for (const [device, options] of [
       expect(g.errors).toEqual([]);
     });
 
-    it('the flight hint: dots from the ball along its flight if cut now, on level 1 from the start, on a later level once missed there', async () => {
+    it('the flight hint: dots from the ball along its flight if cut now, on levels 1 and 2 from the start, on a later level once missed there', async () => {
       const room = await g.page.evaluate(() => (window.game as unknown as { room(): string }).room());
       // Level 1 at a winning time (as in the test above): the path starts at the ball and ends in the basket.
       await g.page.evaluate(
@@ -1147,6 +1182,25 @@ for (const [device, options] of [
       expect(hint.inBasket).toBe(true);
       // Drawn from the ball as drawn (between the last two steps: within a step's travel, 0.1 m).
       expect(Math.hypot(hint.path[0]! - hint.ball[0]!, hint.path[1]! - hint.ball[1]!)).toBeLessThan(0.1);
+      // Level 2 on a first try: no dots while both ropes hold; once one is cut, the dots show at
+      // once, with no "unlocked" (the level 1 to 2 step was steep without them).
+      await g.page.evaluate(() => {
+        const w = window.game as unknown as RopeLab;
+        w.goTo(2);
+        w.paused = true;
+        w.advance(6);
+      });
+      await g.page.waitForTimeout(100);
+      expect(await g.page.evaluate(() => (window.game as unknown as RopeLab).flight().path.length)).toBe(0);
+      const [x0, y0] = await ropeMiddle(g, 0);
+      const at0 = await toPage(g, x0 + 0.05, y0);
+      if (device === 'phone') await g.page.touchscreen.tap(at0.x, at0.y);
+      else await g.page.mouse.click(at0.x, at0.y);
+      expect(await g.page.evaluate(() => (window.game as unknown as RopeLab).holding())).toBe(1);
+      await g.waitFor(() => (window.game as unknown as RopeLab).flight().path.length > 4, null);
+      expect(await g.page.evaluate(() => (window.game as unknown as RopeLab & { hintCaption(): string }).hintCaption())).not.toMatch(
+        /unlocked/,
+      );
       // Level 3 (one rope) on a first try: no hint. Cut 0.3 s in, the ball misses; the next try shows it.
       await g.page.evaluate(() => {
         const w = window.game as unknown as RopeLab;

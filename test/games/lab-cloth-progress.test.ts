@@ -3,7 +3,7 @@
  * a storage over a reload, and nothing fails where the storage is missing or throws; the pass mark.
  */
 import { describe, expect, it } from 'vitest';
-import { loadProgress, PROGRESS_KEY, type ProgressStore, passMark, saveProgress } from '../../games/lab-cloth/progress';
+import { loadProgress, PROGRESS_KEY, type ProgressStore, passMark, recordBest, saveProgress } from '../../games/lab-cloth/progress';
 
 /** A storage in memory, as localStorage. */
 function memory(): ProgressStore & { data: Map<string, string> } {
@@ -51,5 +51,18 @@ describe('lab-cloth progress', () => {
     expect([1, 3, 4].map(passMark)).toEqual([1, 5, 7]);
     expect(() => passMark(0)).toThrow(/passMark: targets must be an integer >= 1, got 0/);
     expect(() => passMark(1.5)).toThrow(RangeError);
+  });
+
+  it('a sheet finished short of its pass mark is not recorded as a best; a pass above the best is', () => {
+    const best = [-1, 5, -1, -1];
+    // The window (12 stars, 7 to pass) failed with 0 stars: no "Best 0/12 ★".
+    expect(recordBest(best, 1, 0, false)).toBe(false);
+    expect(recordBest(best, 2, 0, false)).toBe(false);
+    expect(recordBest(best, 2, 6, false)).toBe(false);
+    expect(best).toEqual([-1, 5, -1, -1]);
+    expect(recordBest(best, 2, 8, true)).toBe(true);
+    expect(recordBest(best, 1, 5, true)).toBe(false);
+    expect(recordBest(best, 1, 7, true)).toBe(true);
+    expect(best).toEqual([-1, 7, 8, -1]);
   });
 });

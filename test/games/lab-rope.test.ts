@@ -9,9 +9,11 @@ import { CUT_END_TRIM, cutRopes, trimPolyline } from '../../games/lab-rope/cut';
 import {
   BALL_DRAG,
   BALL_MASS,
+  BALL_RADIUS,
   createRopeScene,
   cutRope,
   DEFAULTS,
+  LANDED_LOST,
   LEVELS,
   type Level,
   type Outcome,
@@ -158,6 +160,34 @@ describe('lab-rope levels', () => {
     const rolled = play(0, [[2.3, 0]]);
     expect(rolled.outcome).toBe('lost');
     expect(rolled.time).toBeLessThan(5);
+  });
+
+  it('a miss is said at most LANDED_LOST s after the ball first comes down beside the basket, however it bounces', () => {
+    // Misses that bounced, or lay on a cut rope on the floor, 1.5 to 3.2 s before the miss was said
+    // (the ball sitting there with no card): up 1 cut 2.6 s in, up 3 cut 3.3 s in, up 5 pushed and
+    // cut 0.8 s in, wide 1 cut 2.6 s in. Now at most LANDED_LOST (1.2 s) after, 0.05 s spare for the step.
+    const misses: [readonly Level[], number, number, number][] = [
+      [LEVELS, 0, 2.6, 0],
+      [LEVELS, 2, 3.3, 0],
+      [LEVELS, 4, 0.8, 5],
+      [WIDE_LEVELS, 0, 2.6, 0],
+    ];
+    for (const [levels, index, t, push] of misses) {
+      const s = createRopeScene(index, DEFAULTS, levels);
+      const g = new RopeGame(s);
+      const e = slotOf(s.ball);
+      if (push) s.world.components.Velocity.x[e] = push;
+      let down = Number.NaN;
+      for (let i = 0; i < 60 * 12 && g.outcome === 'playing'; i++) {
+        if (s.world.time >= t && g.holding() > 0) for (const r of s.ropes) cutMiddle(s, s.ropes.indexOf(r));
+        step(s.world);
+        g.update();
+        if (Number.isNaN(down) && g.holding() === 0 && s.world.components.Position.y[e]! < BALL_RADIUS + 0.12) down = s.world.time;
+      }
+      const at = `level ${index + 1}, cut ${t} s in`;
+      expect(g.outcome, at).toBe('lost');
+      expect(s.world.time - down, at).toBeLessThanOrEqual(LANDED_LOST + 0.05);
+    }
   });
 
   it("the wide room's levels (a desktop window) are won by their cuts and lost by wrong ones", () => {
