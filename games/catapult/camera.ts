@@ -87,6 +87,11 @@ export interface Field {
   castleTop: number;
   /** The lowest surface (0 for flat ground, a pit's floor below it), m (<= 0). */
   floor: number;
+  /**
+   * How far the aim preview's dots reach, m (scene previewLimit: Infinity where they show the whole
+   * flight); the close aim view keeps them in view (`uprightAimView`). Default Infinity.
+   */
+  previewTo?: number;
 }
 
 /**
@@ -145,27 +150,43 @@ export function uprightFieldView(f: Field, width: number, height: number): View 
 }
 
 /**
- * Upright, the aim view's scale where the whole field is too small on the screen (`aimCloseUp`), px a
- * metre: a 0.6 m stone 22 px across (7 to 12 px in the field's view on a 390 px phone), the catapult
- * with its stones 148 px wide, and the preview's start on every level after the first (to 40 % of the
- * way to the castle, at most 7 m) inside the view's 10.8 m.
+ * Upright, the aim view's least scale where the whole field is too small on the screen (`aimCloseUp`),
+ * px a metre: a 0.6 m stone 22 px across (7 to 12 px in the field's view on a 390 px phone), the
+ * catapult with its stones 148 px wide, and the preview's start on every level after the first (to
+ * 40 % of the way to the castle, at most 7 m) inside the view's 10.8 m.
  */
 export const AIM_PX_PER_M = 36;
+
+/**
+ * Upright, the close aim view's scale where the preview's dots (`Field.previewTo`) and the castle's
+ * front allow it, px a metre: a 0.6 m stone 29 px across, the catapult with its stones (4.1 m) 197 px
+ * wide on a 390 px phone, 8.1 m of the field across (at AIM_PX_PER_M the catapult was a small figure
+ * at the foot of a tall empty sky).
+ */
+export const AIM_CLOSE_PX_PER_M_MAX = 48;
+
+/** Room past the preview's dots' end in the close aim view, m. */
+export const AIM_PREVIEW_ROOM = 0.5;
 
 /** Upright, the close aim view's right edge stays this far short of the castle's front, m: the castle is wholly off the screen, shown by its inset and its arrow at the edge rather than cut by the edge. */
 export const AIM_SHORT = 1;
 
 /**
  * Upright, the aim view: where the field's view (`uprightFieldView`) draws the castle small
- * (`aimCloseUp`: every level on a phone), close on the catapult: from AIM_LEFT, AIM_PX_PER_M px a
- * metre, or closer where that would reach within AIM_SHORT of the castle's front; the page shows the
- * castle in an inset under the ground and an arrow with its distance at the screen's edge. Else (an
- * upright tablet) the field's view, the catapult and the whole castle.
+ * (`aimCloseUp`: every level on a phone), close on the catapult: from AIM_LEFT, AIM_CLOSE_PX_PER_M_MAX
+ * px a metre, or farther out where the preview's dots (`Field.previewTo`, a finite reach) need it, to
+ * AIM_PREVIEW_ROOM past them, but no farther than AIM_PX_PER_M, and closer where that would reach
+ * within AIM_SHORT of the castle's front; the page shows the castle in an inset under the ground and
+ * an arrow with its distance at the screen's edge. Else (an upright tablet) the field's view, the
+ * catapult and the whole castle.
  * @throws RangeError if the screen's size is not positive.
  */
 export function uprightAimView(f: Field, width: number, height: number): View {
   if (!aimCloseUp(f, width, height)) return uprightFieldView(f, width, height);
-  const right = Math.min(AIM_LEFT + width / AIM_PX_PER_M, f.castleMinX - AIM_SHORT);
+  const to = f.previewTo ?? Number.POSITIVE_INFINITY;
+  const reach = Number.isFinite(to) ? to + AIM_PREVIEW_ROOM - AIM_LEFT : 0;
+  const span = Math.min(Math.max(width / AIM_CLOSE_PX_PER_M_MAX, reach), width / AIM_PX_PER_M);
+  const right = Math.min(AIM_LEFT + span, f.castleMinX - AIM_SHORT);
   return uprightView(f, AIM_LEFT, Math.max(right, LAUNCH.x + 2), width, height);
 }
 

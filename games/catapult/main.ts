@@ -572,6 +572,7 @@ function field(): Field {
     castleMaxX: lv.castleMaxX,
     castleTop: lv.castleTop,
     floor: Math.min(0, ...lv.terrain.map((t) => t.maxY)),
+    previewTo: previewLimit(params.level - 1, lv, params.guide === 'full'),
   };
 }
 /** The right face of the rock behind the castle, m. */
@@ -1587,9 +1588,10 @@ function showAimDom(): void {
   setAttrs(d.press, { cx: aim.x0, cy: aim.y0 });
   setAttrs(d.end, { cx: ex, cy: ey, fill: color });
   drawArc(vx, vy);
-  // The power bar over the catapult, kept on the screen AIM_EDGE px from its edges.
+  // The power bar centred on the press (where the pull starts: the same place on every level, by
+  // the finger), kept on the screen AIM_EDGE px from its edges.
   const w = Math.max(90, cam.toScreenLength(2));
-  const x = Math.min(Math.max(AIM_EDGE, cam.toScreenX(-0.3) - w / 2), cam.width - w - AIM_EDGE);
+  const x = Math.min(Math.max(AIM_EDGE, aim.x0 - w / 2), cam.width - w - AIM_EDGE);
   d.bar.style.width = `${w}px`;
   d.fill.style.width = `${Math.max(2, w * power)}px`;
   d.fill.style.background = color;
@@ -1606,14 +1608,18 @@ function showAimDom(): void {
     lh = d.label.offsetHeight;
   const centre = Math.min(Math.max(x + w / 2, lw / 2 + AIM_EDGE), cam.width - lw / 2 - AIM_EDGE);
   d.label.style.left = `${centre - lw / 2 - (x - 2)}px`;
-  // The numbers and bar (the bar's top at y) over the catapult, else in the earth under it, else
-  // over the band: the first clear of the band and its knob (placeAimLabel), all on the screen.
+  // The numbers and bar (the bar's top at y) AIM_OVER_PRESS px over the press (a pull goes down and
+  // back from it), else as far under it, else over the band: the first clear of the band and its
+  // knob (placeAimLabel) and on the screen. (Placed by the catapult and the ground, they sat over
+  // the catapult on one level and under the ground on the next.)
   const boxAt = (y: number): Box => {
     const left = Math.min(x, centre - lw / 2);
     return { x: left, y: y - 6 - lh, w: Math.max(x + w, centre + lw / 2) - left, h: lh + 6 + AIM_BAR_H };
   };
-  // (Not under the ground while the castle's close-up is there, drawCloseUp.)
-  const places = [Math.max(60, cam.toScreenY(3.2)), cam.toScreenY(0) + 24 + lh, Math.min(aim.y0, ey) - 24 - AIM_BAR_H].filter(
+  // (Under the banner's foot at the top, 56 px; not under the press while the castle's close-up is
+  // in the earth, drawCloseUp.)
+  const over = Math.max(aim.y0 - AIM_OVER_PRESS - AIM_BAR_H, 62 + lh);
+  const places = [over, aim.y0 + AIM_OVER_PRESS + 6 + lh, Math.min(aim.y0, ey) - 24 - AIM_BAR_H].filter(
     (y, k) => k === 0 || (boxAt(y).y >= 56 && y + AIM_BAR_H <= cam.height - AIM_EDGE && !(k === 1 && closeWhileAiming)),
   );
   const y = places[placeAimLabel(places.map(boxAt), [aim.x0, aim.y0, ex, ey], AIM_CLEARANCE)]!;
@@ -1621,6 +1627,8 @@ function showAimDom(): void {
   d.box.style.left = `${x - 2}px`;
   d.box.style.top = `${y - 2}px`;
 }
+/** Gap, px, between the press (where a pull starts) and the aim's numbers and bar over it (or under it). */
+const AIM_OVER_PRESS = 28;
 /** Least margin, px, between the aim's numbers and bar and the screen's edges (at 4 px they read as jammed against the page's sidebar). */
 const AIM_EDGE = 14;
 /** The power bar's height with its padding, px. */

@@ -28,6 +28,7 @@ interface Game {
   fullPullPx(): number;
   lastLaunch(): [number, number];
   aimShown(): { power: number; angle: number };
+  aimLabelAt(): { box: { x: number; y: number; w: number; h: number }; band: number[] };
   world: { gravity: Float64Array | number[] };
   renderer: { camera: { toScreenX(x: number): number; toScreenY(y: number): number; width: number; height: number } };
   panel: {
@@ -156,6 +157,44 @@ describe('catapult on a phone held upright (390 x 844, touch)', () => {
     await p.waitFor(() => (window.game as unknown as Game).shots().length === 1, null);
     const v = await p.page.evaluate(() => (window.game as unknown as Game).lastLaunch());
     expect(Math.hypot(v[0], v[1])).toBeGreaterThan(0.98 * 21);
+  });
+
+  it('levels 1 and 2 aim close (the catapult 190 px wide or more); the power and angle sit over the press on both', async () => {
+    const seen: Array<{ catapult: number; press: number[]; box: { x: number; y: number; w: number; h: number } }> = [];
+    for (const level of [1, 2]) {
+      await startLevel(level);
+      await toAimView();
+      // The catapult with its stones, x -3.0 to 1.1 m, across the canvas, px.
+      const catapult = await p.page.evaluate(() => {
+        const cam = (window.game as unknown as Game).renderer.camera;
+        return cam.toScreenX(1.1) - cam.toScreenX(-3.0);
+      });
+      // The same pull on both levels: from 60 % across and half-way down, 100 px down and back.
+      const box = (await p.page.locator('canvas').boundingBox())!;
+      const x0 = box.x + 0.6 * box.width,
+        y0 = box.y + 0.5 * box.height;
+      const path: Array<[number, number]> = [];
+      for (let i = 0; i <= 4; i++) path.push([x0 - 20 * i, y0 + 12 * i]);
+      await touchPath(p.page, path, 100, async () => {
+        const at = await p.page.evaluate(() => (window.game as unknown as Game).aimLabelAt());
+        seen.push({ catapult, press: at.band.slice(0, 2), box: at.box });
+      });
+    }
+    const at = JSON.stringify(seen);
+    // 197 px at 48 px a metre (camera.ts AIM_CLOSE_PX_PER_M_MAX); it was 173 and 148 px, a small
+    // figure at the foot of a tall sky.
+    for (const s of seen) expect(s.catapult, at).toBeGreaterThanOrEqual(190);
+    // The numbers and bar over the press, their foot 10 to 60 px above it, across its x, and at the
+    // same height over it on both levels (to a pixel: the label's lines differ, its foot does not).
+    // They sat over the catapult on level 1 and under the ground on level 2.
+    const foot = seen.map((s) => s.press[1]! - (s.box.y + s.box.h));
+    for (const [k, s] of seen.entries()) {
+      expect(foot[k], at).toBeGreaterThanOrEqual(10);
+      expect(foot[k], at).toBeLessThanOrEqual(60);
+      expect(s.box.x <= s.press[0]! && s.press[0]! <= s.box.x + s.box.w, at).toBe(true);
+    }
+    expect(Math.abs(foot[0]! - foot[1]!), at).toBeLessThanOrEqual(1);
+    expect(p.errors).toEqual([]);
   });
 
   it("the castle's inset shows on every frame from the throw until the castle is on the screen (level 3, the farthest castle)", async () => {

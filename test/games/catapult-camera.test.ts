@@ -45,6 +45,7 @@ function levelField(level: number): Field {
     castleMaxX: lv.castleMaxX,
     castleTop: lv.castleTop,
     floor: Math.min(0, ...lv.terrain.map((t) => t.maxY)),
+    previewTo: previewLimit(level, lv),
   };
 }
 
@@ -87,6 +88,7 @@ describe('catapult camera', () => {
     };
     const inside = (b: number[]) => b[0]! >= 0 && b[1]! >= 0 && b[2]! <= W && b[3]! <= H;
     const shownWhileAiming: number[] = [];
+    const catapultPx: number[] = [];
     for (let level = 0; level < LEVEL_COUNT; level++) {
       const f = levelField(level);
       const aim = uprightAimView(f, W, H),
@@ -104,6 +106,7 @@ describe('catapult camera', () => {
       shownWhileAiming.push(level + 1);
       // AIM_PX_PER_M or closer: the 0.6 m stone at least 21 px across, 1.7 x the field's at least.
       expect(perM(aim), tag).toBeGreaterThanOrEqual(AIM_PX_PER_M - 1e-9);
+      catapultPx.push(Math.round(4.1 * perM(aim)));
       expect(2 * PROJECTILE_RADIUS * perM(aim), tag).toBeGreaterThanOrEqual(21);
       expect(perM(aim) / perM(field), tag).toBeGreaterThanOrEqual(1.7);
       // The catapult with its mound and its four stones (x -3.0 to 1.1 m, y 0 to 2 m; see look.ts and
@@ -122,6 +125,12 @@ describe('catapult camera', () => {
       expect(close.maxX - close.minX, tag).toBeLessThan((field.maxX - field.minX) / 1.25);
     }
     expect(shownWhileAiming).toEqual([1, 2, 3, 4, 5, 6, 7, 8, 9]);
+    // The catapult with its stones (4.1 m) as large as the preview's dots and the castle's front
+    // allow (AIM_CLOSE_PX_PER_M_MAX): 197 px on levels 1 and 2 (173 and 148 px at the old fixed
+    // 36 px a metre, a small figure under a tall empty sky), and at least 175 px on all but one level
+    // (level 3's dots reach 7 m: 149 px there). To the pixel, rounded.
+    expect(catapultPx.slice(0, 2)).toEqual([197, 197]);
+    expect(catapultPx.filter((px) => px >= 175).length, JSON.stringify(catapultPx)).toBeGreaterThanOrEqual(8);
   });
 
   it('upright tablet 768 x 1024 on every level: the aim view is the field, the catapult and the whole castle, UPRIGHT_GROUND up', () => {
