@@ -132,6 +132,7 @@ import {
   type RotatingCubeHandles,
   rollSettle,
   rotatingCubeWorldOptions,
+  SLID_ON_MOVES,
   slideSpeed,
   topFace,
   torqueCouple,
@@ -1906,8 +1907,6 @@ function routeHint(): string {
   return `Stuck? A shortest way from here: ${words.join(' ')}`;
 }
 
-/** The fewest moves left with the cube slid onto the lit pad, the wanted face on top: a roll off and the roll back on. */
-const SLID_ON_MOVES = 2;
 /**
  * Room mode: while the cube rests flat and still (scene.ts `cubeStill`), counts the moves left on the
  * lit pad from there (scene.ts `padMovePar`, or SLID_ON_MOVES when slid on) into `toGo`; a new pad lit
