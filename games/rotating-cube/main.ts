@@ -681,6 +681,8 @@ const padMesh = new Mesh(
     emissiveIntensity: 0.9,
     roughness: 0.4,
     transparent: true,
+    // The floor's boards show through: the lit pad reads as a mark on the floor, not a block's top.
+    opacity: 0.6,
     depthWrite: false,
   }),
 );
