@@ -64,3 +64,32 @@ export function touchPress(onCube: boolean, movedPx: number): 'flick' | 'push' |
   if (onCube) return moved ? 'flick' : 'push';
   return moved ? 'none' : 'push';
 }
+
+/**
+ * Room mode: a roll key pressed while the cube is busy (a roll still turning, or the cube not yet at
+ * rest) is kept as the one pending roll instead of being lost, and pressed again once the cube rests:
+ * a phone's second ▼ tap during a slow roll rolls it on. A later press while busy replaces the pending one.
+ */
+export class RollQueue {
+  /** The roll key waiting ('w', 'a', 's' or 'd'), or '' for none. */
+  pending = '';
+  /**
+   * A fresh press of roll key `key` with the cube `busy` or not. @returns whether it acts now (not
+   * busy: any pending roll is dropped, this one replaces it); when busy it waits as the pending roll.
+   */
+  press(key: string, busy: boolean): boolean {
+    this.pending = busy ? key : '';
+    return !busy;
+  }
+  /** The pending key to press now that the cube is free (`busy` false), which empties the queue; '' while busy or with none. */
+  take(busy: boolean): string {
+    if (busy) return '';
+    const key = this.pending;
+    this.pending = '';
+    return key;
+  }
+  /** Forgets the pending roll (a new world). */
+  clear(): void {
+    this.pending = '';
+  }
+}

@@ -93,7 +93,7 @@ import {
   SRGBColorSpace,
   Vector3,
 } from 'three';
-import { cubeControls, TAP_SLOP, touchPress } from './controls';
+import { cubeControls, RollQueue, TAP_SLOP, touchPress } from './controls';
 import { bedSnap, edgeCells } from './roll-puzzle';
 import { buildRoomLook } from './room-look';
 import { type RoundEndContent, roundEnd, starText } from './round-end';
@@ -132,6 +132,7 @@ import {
   type RotatingCubeHandles,
   rollSettle,
   rotatingCubeWorldOptions,
+  SLID_ON_MOVES,
   slideSpeed,
   topFace,
   torqueCouple,
@@ -262,6 +263,8 @@ let settleArmed = false;
 const latchAxis = new Float64Array(3),
   latchQ = new Float64Array(4);
 let latchUntil = -1;
+/** Room mode: a roll key pressed while the cube is busy waits here for it to rest (controls.ts `RollQueue`). */
+const rollQueue = new RollQueue();
 /** Pads reached and not yet celebrated: the pad's index, the world time, s, the miss from its centre, m, and the moves it took against its par. */
 const padsReached: { pad: number; time: number; miss: number; moves: number; par: number }[] = [];
 
@@ -351,6 +354,7 @@ function createWorld(): PhysicsWorld {
   spinsReached.length = 0;
   padsReached.length = 0;
   latchUntil = -1;
+  rollQueue.clear();
   addSystem(world, 'finalize', (w) => {
     if (params.mode === 'room') {
       const spot = layout.pads[pads.pad],
@@ -677,6 +681,8 @@ const padMesh = new Mesh(
     emissiveIntensity: 0.9,
     roughness: 0.4,
     transparent: true,
+    // The floor's boards show through: the lit pad reads as a mark on the floor, not a block's top.
+    opacity: 0.6,
     depthWrite: false,
   }),
 );
@@ -1123,7 +1129,22 @@ app.scene.add(pivotPost, pivotFoot);
 const held = new Set<string>();
 /** Keys pressed since the last frame (a press and release between two frames still counts once). */
 const pressed = new Set<string>();
+/** Keys in `pressed` only by a held key's repeat: a repeat while the cube is busy is not queued (rollQueue). */
+const repeated = new Set<string>();
 const TORQUE_KEYS = ['w', 's', 'a', 'd', 'q', 'e'];
+/**
+ * Room mode, before the keys are read: a fresh roll press while a roll's latch runs or the cube is not
+ * still is taken out of `pressed` and queued (a held key still torques it, as before); once the cube
+ * rests, the queued key is pressed (unless it is still held, which rolls it anyway).
+ */
+function queueRolls(): void {
+  const world = shell.world,
+    busy = latchUntil > world.time || !cubeStill(world, handles.body);
+  for (const k of ['w', 'a', 's', 'd']) if (pressed.has(k) && !repeated.has(k) && !rollQueue.press(k, busy)) pressed.delete(k);
+  repeated.clear();
+  const next = rollQueue.take(busy);
+  if (next && !held.has(next)) pressed.add(next);
+}
 function typing(target: EventTarget | null): boolean {
   const el = target as HTMLElement | null;
   return !!el && (el.tagName === 'INPUT' || el.tagName === 'SELECT' || el.tagName === 'TEXTAREA');
@@ -1138,6 +1159,7 @@ window.addEventListener('keydown', (event) => {
   held.add(k);
   // A held key's repeats refresh a roll's latch; a quarter turn (Q, E) is one a press, and goes on by itself while held.
   if (!event.repeat || (k !== 'q' && k !== 'e')) pressed.add(k);
+  if (event.repeat) repeated.add(k);
   event.preventDefault();
 });
 window.addEventListener('keyup', (event) => held.delete(event.key.toLowerCase()));
@@ -1340,6 +1362,8 @@ function updateKeyTorque(): void {
     const left = (tapUntil.get(k) ?? t) - t;
     return left > 0 && left <= FLIP_TAP_TIME;
   };
+  if (params.mode === 'room') queueRolls();
+  else repeated.clear();
   const newRoll = pressed.has('w') || pressed.has('a') || pressed.has('s') || pressed.has('d');
   const pitch = (on('s') ? 1 : 0) - (on('w') ? 1 : 0);
   const yaw = (on('d') ? 1 : 0) - (on('a') ? 1 : 0);
@@ -1906,8 +1930,6 @@ function routeHint(): string {
   return `Stuck? A shortest way from here: ${words.join(' ')}`;
 }
 
-/** The fewest moves left with the cube slid onto the lit pad, the wanted face on top: a roll off and the roll back on. */
-const SLID_ON_MOVES = 2;
 /**
  * Room mode: while the cube rests flat and still (scene.ts `cubeStill`), counts the moves left on the
  * lit pad from there (scene.ts `padMovePar`, or SLID_ON_MOVES when slid on) into `toGo`; a new pad lit

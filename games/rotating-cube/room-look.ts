@@ -231,6 +231,9 @@ export interface RoomLook {
   update(camera: Vector3, x: number, z: number, half: number, color: number, strength: number): void;
 }
 
+/** Height of the lit pad's rim of light, m: well under the 1 m cube, so the pad reads as a mark on the floor. */
+const PAD_RIM_HEIGHT = 0.3;
+
 /** Opacity of a wall between the camera and the room: the cube behind it stays in sight. */
 const NEAR_WALL_OPACITY = 0.4;
 
@@ -345,7 +348,8 @@ export function buildRoomLook(scene: Scene, roomHalf: number, wallHeight: number
   const fog = new Fog(0x3a3160, 16, 42);
   const background = scene.background;
 
-  // The lit pad's glow: a halo on the floor round it and a square beam rising from its edge, added to what is behind.
+  // The lit pad's glow: a halo on the floor round it and a low square rim of light rising from its
+  // edge (PAD_RIM_HEIGHT), added to what is behind: a floor marking, not a glowing block the size of the cube.
   const halo = new Mesh(
     new PlaneGeometry(1, 1).rotateX(-Math.PI / 2),
     new MeshBasicMaterial({ map: haloTexture(), transparent: true, blending: AdditiveBlending, depthWrite: false }),
@@ -388,12 +392,12 @@ export function buildRoomLook(scene: Scene, roomHalf: number, wallHeight: number
       halo.visible = beam.visible = strength > 0;
       if (strength <= 0) return;
       const c = (halo.material as MeshBasicMaterial).color;
-      c.setHex(color).multiplyScalar(0.85 * strength);
-      (beam.material as MeshBasicMaterial).color.copy(c).multiplyScalar(0.6);
+      c.setHex(color).multiplyScalar(0.6 * strength);
+      (beam.material as MeshBasicMaterial).color.copy(c).multiplyScalar(0.45);
       halo.position.set(x, 0.006, z);
       halo.scale.set(4.4 * half, 1, 4.4 * half);
       beam.position.set(x, 0.02, z);
-      beam.scale.set(1.02 * half * Math.SQRT2, 1.6, 1.02 * half * Math.SQRT2);
+      beam.scale.set(1.02 * half * Math.SQRT2, PAD_RIM_HEIGHT, 1.02 * half * Math.SQRT2);
     },
   };
 }

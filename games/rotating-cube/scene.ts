@@ -929,13 +929,18 @@ export class PadChallenge {
       reach = halves[this.pad]! + PAD_GRACE;
     const P = world.components.Position;
     this.over = Math.abs(P.x[body]! - spot[0]) <= reach && Math.abs(P.z[body]! - spot[1]) <= reach;
-    if (!restsOnPad(world, body, spot[0], spot[1], reach)) return false;
+    if (!restsOnPad(world, body, spot[0], spot[1], reach)) {
+      this.lowerPar(world, body);
+      return false;
+    }
     if (face >= 0 && top !== face) {
       this.blocked = 'face';
+      this.lowerPar(world, body);
       return false;
     }
     if (face >= 0 && !this.rolled) {
       this.blocked = 'slide';
+      this.lowerPar(world, body, SLID_ON_MOVES);
       return false;
     }
     this.over = false;
@@ -946,7 +951,23 @@ export class PadChallenge {
     else this.pars.push(padMovePar(world, body, this.layout, this.pad));
     return true;
   }
+  /**
+   * Keeps the lit pad's par the fewest moves the player was shown (the page's "best: N more"): while
+   * the cube rests flat, the moves made on the pad plus the fewest left from there (`left`, default
+   * `padMovePar`; SLID_ON_MOVES when slid onto a face pad) is a way onto the pad. Before the pad's
+   * first move that sets the par (one worked out as the pad lit, the cube still settling, may be off
+   * by a cell); after it, it only lowers the par.
+   */
+  private lowerPar(world: PhysicsWorld, body: number, left = -2): void {
+    if (!cubeStill(world, body) || world.components.Position.y[body]! > 0.55) return;
+    const rest = left === -2 ? padMovePar(world, body, this.layout, this.pad) : left;
+    const par = this.pars[this.pad] ?? -1;
+    if (rest >= 0 && (par < 0 || this.padMoves === 0 || this.padMoves + rest < par)) this.pars[this.pad] = this.padMoves + rest;
+  }
 }
+
+/** The fewest moves left with the cube slid onto the lit pad, the wanted face on top: a roll off and the roll back on. */
+export const SLID_ON_MOVES = 2;
 
 /**
  * Flip mode: the round's time to FLIP_GOAL flips, s, for three stars and for two (a win slower than

@@ -4,7 +4,7 @@
  * it (on the cube too) while a drag from the cube flicks it.
  */
 import { describe, expect, it } from 'vitest';
-import { cubeControls, TAP_SLOP, touchPress } from '../../games/rotating-cube/controls';
+import { cubeControls, RollQueue, TAP_SLOP, touchPress } from '../../games/rotating-cube/controls';
 
 const line = (mode: 'room' | 'cube' | 'flip', touch: boolean, keys: string) =>
   cubeControls(mode, touch).find((c) => c.keys === keys)!.action;
@@ -47,5 +47,40 @@ describe('rotating cube: a finger in the room', () => {
     expect(touchPress(false, TAP_SLOP + 0.5)).toBe('none');
     expect(() => touchPress(true, -1)).toThrow(/touchPress: movedPx/);
     expect(() => touchPress(false, Number.NaN)).toThrow(/touchPress: movedPx/);
+  });
+});
+
+describe('rotating cube roll queue', () => {
+  it('a roll tap while the cube is busy waits and acts once it rests: two ▼ taps, two rolls', () => {
+    // A phone player tapped ▼ twice 2 s apart and got one roll: the second tap came while the first
+    // roll still turned. Frames as the page reads them: busy while a roll turns or the cube settles.
+    const q = new RollQueue();
+    const frames: { tap?: string; busy: boolean }[] = [
+      { tap: 's', busy: false },
+      { busy: true },
+      { tap: 's', busy: true },
+      { busy: true },
+      { busy: false },
+      { busy: false },
+    ];
+    const rolls: string[] = [];
+    for (const f of frames) {
+      if (f.tap && q.press(f.tap, f.busy)) rolls.push(f.tap);
+      const next = q.take(f.busy);
+      if (next) rolls.push(next);
+    }
+    expect(rolls).toEqual(['s', 's']);
+    expect(q.pending).toBe('');
+  });
+  it('one pending move: a later tap while busy replaces it; a tap while free acts at once and drops it; clear forgets it', () => {
+    const q = new RollQueue();
+    expect([q.press('w', true), q.press('a', true), q.pending]).toEqual([false, false, 'a']);
+    expect(q.take(true)).toBe('');
+    expect([q.take(false), q.take(false)]).toEqual(['a', '']);
+    q.press('d', true);
+    expect([q.press('s', false), q.pending]).toEqual([true, '']);
+    q.press('d', true);
+    q.clear();
+    expect(q.take(false)).toBe('');
   });
 });

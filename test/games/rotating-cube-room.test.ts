@@ -9,6 +9,7 @@ import { addSystem, applyImpulse, createPhysicsWorld, type PhysicsWorld, setAngu
 import { describe, expect, it } from 'vitest';
 import { CARD_LINES } from '../../games/gallery-cards';
 import { roundEnd, starText } from '../../games/rotating-cube/round-end';
+import { padResultText } from '../../games/rotating-cube/round-moves';
 import {
   buildRotatingCube,
   EDGES,
@@ -568,6 +569,40 @@ describe('rotating-cube round ends and the moves-to-go indicator', () => {
     meter.reset();
     expect([meter.update(0), meter.trend, meter.text()]).toEqual([true, '', 'best: 0 more moves']);
     expect(() => meter.update(1.5)).toThrow(/ToGoMeter.update: movesLeft .* got 1.5/);
+  });
+
+  it("a pad's par is the fewest moves the player was shown, so a Perfect pop means moves == that best", () => {
+    // A player read "best 3" for a pad and "Perfect!" after 6 moves: the par was worked out as the pad
+    // lit, the cube not yet on its final cell. The par follows the count read where the cube rests:
+    // set before the pad's first move, only lowered after it.
+    const { world, h, rounds } = roundWorld('room');
+    const pads = rounds.pads;
+    pads.pad = 2;
+    pads.pars = [0, 0];
+    const count = (x: number, q: readonly number[]): number => {
+      setDown(world, h.body, x, 0.51, 0, q, 30);
+      return padMovePar(world, h.body, centred, 2);
+    };
+    // Lit 1 m west with red on top (3 moves, worked by hand in the test above), then it settles 2 m west.
+    expect(count(-1, FACE_UP[0]!)).toBe(3);
+    expect(pads.pars[2]).toBe(3);
+    const settled = count(-2, FACE_UP[0]!);
+    expect(settled).not.toBe(3);
+    expect([pads.padMoves, pads.pars[2]]).toEqual([0, settled]);
+    expect(padResultText(3, pads.pars[2]!)).toBe(settled < 3 ? ` · 3 moves, best ${settled}` : ' · Perfect!');
+    // Two slides later, back where 3 more are needed (2 + 3 > the best): the par stays.
+    pads.slid();
+    pads.slid();
+    expect(count(-1, FACE_UP[0]!)).toBe(3);
+    expect(pads.pars[2]).toBe(settled);
+    // A slide, then a roll to red facing west 1 m off (1 more): 2 made + 1 is the par 3, which stays.
+    pads.reset(centred);
+    pads.pad = 2;
+    pads.pars = [0, 0];
+    expect(count(-1, FACE_UP[0]!)).toBe(3);
+    pads.slid();
+    expect(count(-1, RED_WEST)).toBe(1);
+    expect([pads.padMoves, pads.pars[2]]).toEqual([2, 3]);
   });
 
   it('moves to go: rolling the shortest route in the physics, one roll at a time, counts down by one to 0 and wins the pad', () => {
