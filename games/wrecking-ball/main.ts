@@ -911,6 +911,9 @@ function fadeJib(ca: number, sa: number): void {
   if (m.transparent === faded) return;
   m.transparent = faded;
   m.opacity = faded ? JIB_FADED : 1;
+  // The lattice's alpha test compares its alpha times the opacity: at the solid jib's threshold
+  // every fragment of the faded jib was cut and it vanished (the cable hung from empty sky).
+  m.alphaTest = faded ? m.alphaTest * JIB_FADED : m.alphaTest / JIB_FADED;
   m.depthWrite = !faded;
   m.needsUpdate = true;
 }
@@ -2834,6 +2837,11 @@ shell.expose({
    * behind it (drawn faded whenever it pointed toward the camera, it looked ghostly).
    */
   jibSolid: (): boolean => !jib.material.transparent && jib.material.opacity === 1 && jib.material.depthWrite,
+  /**
+   * Whether the jib's lattice bars are drawn at all: their alpha (1) times the material's opacity
+   * passes its alpha test (faded at the solid jib's test, every fragment was cut).
+   */
+  jibShows: (): boolean => jib.material.opacity > jib.material.alphaTest,
   /** The camera's orbit target, m (it follows the ball; see followAction). */
   cameraTarget: (): number[] => (app.controls ? app.controls.target.toArray() : []),
   /** The orbit target of the site's framing the camera returns to, m (null once the player has moved the camera). */
