@@ -79,6 +79,7 @@ import {
 } from 'three';
 import { ScoreTally, SiteEffects } from './effects';
 import { bodyHalfExtents, cheaperMaterial, dirtTexture, GroundShadows, pieceGeometry, pieceMaterials, skylineTexture } from './look';
+import { missWords, type NearestPass } from './miss';
 import {
   aimAt,
   BALL_RADIUS,
@@ -911,6 +912,9 @@ function fadeJib(ca: number, sa: number): void {
   if (m.transparent === faded) return;
   m.transparent = faded;
   m.opacity = faded ? JIB_FADED : 1;
+  // The lattice's alpha test compares its alpha times the opacity: at the solid jib's threshold
+  // every fragment of the faded jib was cut and it vanished (the cable hung from empty sky).
+  m.alphaTest = faded ? m.alphaTest * JIB_FADED : m.alphaTest / JIB_FADED;
   m.depthWrite = !faded;
   m.needsUpdate = true;
 }
@@ -1917,7 +1921,32 @@ let aimed = 0;
  * The standing pieces when the last swing was aimed (to count what it brought down), the ball's
  * speed it was aimed at (m/s; 0 for a swing planned without a pull), and what it did.
  */
-const swing = { downBefore: 0, speed: 0, result: '', resultAt: 0, pending: false };
+const swing = { downBefore: 0, speed: 0, result: '', resultAt: 0, pending: false, direction: 0 };
+/** Where the ball came nearest the aimed piece during the swing that is pending, and how near (m, centre to centre). */
+const nearest: { pass: NearestPass | null; distance: number } = { pass: null, distance: Number.POSITIVE_INFINITY };
+const cameraRight = new Vector3();
+/** While a swing is pending: notes the ball's nearest pass by the piece aimed at (for the words of a miss). */
+function trackNearest(): void {
+  if (!swing.pending || aimed === 0 || !isAlive(shell.world, aimed)) return;
+  const P = shell.world.components.Position;
+  const b = handles.ball;
+  const d = Math.hypot(P.x[b]! - P.x[aimed]!, P.y[b]! - P.y[aimed]!, P.z[b]! - P.z[aimed]!);
+  if (d >= nearest.distance) return;
+  const piece = handles.pieces.find((p) => p.body === aimed);
+  if (!piece) return;
+  const across = Math.max(...piece.half.filter((_, i) => i !== piece.upAxis));
+  cameraRight.setFromMatrixColumn(app.camera.matrixWorld, 0);
+  const r = Math.hypot(cameraRight.x, cameraRight.z) || 1;
+  nearest.distance = d;
+  nearest.pass = {
+    ball: [P.x[b]!, P.y[b]!, P.z[b]!],
+    target: [P.x[aimed]!, P.y[aimed]!, P.z[aimed]!],
+    half: [across, piece.half[piece.upAxis]!, across],
+    radius: BALL_RADIUS,
+    direction: swing.direction,
+    right: [cameraRight.x / r, cameraRight.z / r],
+  };
+}
 /**
  * Distance, CSS px, from a standing piece's drawn outline within which a press that misses every
  * piece still takes it: a finger's width on a touch screen, a mouse's slip on a desktop.
@@ -2091,6 +2120,12 @@ function swingAt(piece: number, aim?: SwingRequest): boolean {
   swing.speed = aim?.speed ?? 0;
   swing.result = '';
   swing.pending = true;
+  {
+    const P = shell.world.components.Position;
+    swing.direction = aim?.direction ?? Math.atan2(P.z[piece]! - P.z[handles.ball]!, P.x[piece]! - P.x[handles.ball]!);
+  }
+  nearest.pass = null;
+  nearest.distance = Number.POSITIVE_INFINITY;
   if (cleared) clearedWith.tapped = true;
   sound.chime(retargeted && before !== piece ? 880 : 660, 0.15);
   return true;
@@ -2663,7 +2698,11 @@ function countResult(): void {
   // little: the line says where the skill lies.
   const high = aimed !== 0 && isAlive(shell.world, aimed) && (handles.pieces.find((p) => p.body === aimed)?.y0 ?? 0) > HIGH_AIM;
   const at = swing.speed > 0 ? ` at ${swing.speed.toFixed(1)} m/s` : '';
-  swing.result = down > 0 ? `Hit${at}! ${down} down${down <= 2 && high ? ': aim lower to topple more' : ''}` : 'Missed: tap it again';
+  const missed = nearest.pass !== null ? missWords(nearest.pass, pieceName(aimed), touch ? 'Down' : 'E') : 'Missed: tap it again';
+  // The status line keeps a miss's first sentence; the whole, with its hint, is said over the
+  // scene (in the status line alone a miss went unseen).
+  swing.result = down > 0 ? `Hit${at}! ${down} down${down <= 2 && high ? ': aim lower to topple more' : ''}` : missed.split('. ')[0]!;
+  if (down === 0) say(missed);
   swing.resultAt = shell.world.time;
   swing.pending = false;
   runEndedAt = -1;
@@ -2764,6 +2803,7 @@ function frame(): void {
   // Once a swing's run is over, what it did: how many pieces it brought down, said for RESULT_SHOWN s.
   if (aimed !== 0 && handles.controls.moves.length === 0 && handles.controls.pull === null && swing.pending && runEndedAt < 0)
     runEndedAt = shell.world.time;
+  trackNearest();
   if (runEndedAt >= 0 && shell.world.time - runEndedAt > 1.5) countResult();
   if (frames++ % 6 === 0) {
     const n = handles.pieces.length,
@@ -2834,6 +2874,11 @@ shell.expose({
    * behind it (drawn faded whenever it pointed toward the camera, it looked ghostly).
    */
   jibSolid: (): boolean => !jib.material.transparent && jib.material.opacity === 1 && jib.material.depthWrite,
+  /**
+   * Whether the jib's lattice bars are drawn at all: their alpha (1) times the material's opacity
+   * passes its alpha test (faded at the solid jib's test, every fragment was cut).
+   */
+  jibShows: (): boolean => jib.material.opacity > jib.material.alphaTest,
   /** The camera's orbit target, m (it follows the ball; see followAction). */
   cameraTarget: (): number[] => (app.controls ? app.controls.target.toArray() : []),
   /** The orbit target of the site's framing the camera returns to, m (null once the player has moved the camera). */

@@ -13,6 +13,7 @@ interface WB {
   releaseAt(x: number, y: number): string;
   aimExtent(): { x: number; y: number } | null;
   jibSolid(): boolean;
+  jibShows(): boolean;
   paused: boolean;
   app: {
     camera: {
@@ -107,10 +108,10 @@ describe('wrecking ball: the aim arrow and the jib keep out of the way', () => {
           const t = Math.min(1, Math.max(0, ((x - ax) * (bx - ax) + (y - ay) * (by - ay)) / ((bx - ax) ** 2 + (by - ay) ** 2)));
           near = Math.min(near, Math.hypot(x - ax - t * (bx - ax), y - ay - t * (by - ay)));
         }
-        return { solid: game.jibSolid(), near };
+        return { solid: game.jibSolid(), shows: game.jibShows(), near };
       });
     };
-    const seen: { solid: boolean; near: number }[] = [];
+    const seen: { solid: boolean; shows: boolean; near: number }[] = [];
     for (let k = 0; k < 12; k++) seen.push(await slewed((k * Math.PI) / 6));
     console.log(seen.map((s) => `${s.near.toFixed(0)} px ${s.solid ? 'solid' : 'faded'}`).join(', '));
     // Before: solid at every angle (slewed toward the far structures it hid them; measured: within
@@ -123,6 +124,9 @@ describe('wrecking ball: the aim arrow and the jib keep out of the way', () => {
     expect(clear.length).toBeGreaterThan(0);
     expect(over.every((s) => !s.solid)).toBe(true);
     expect(clear.every((s) => s.solid)).toBe(true);
+    // Faded, the jib still shows: its bars' alpha times its opacity (0.35) passes its alpha test
+    // (at the solid jib's test, 0.5, every fragment was cut: a phone saw the cable hang from empty sky).
+    expect(seen.every((s) => s.shows)).toBe(true);
   });
 
   it('1280 x 800, level 4: the site plan draws the two concrete shields as grey bars', async () => {
