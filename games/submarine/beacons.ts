@@ -229,6 +229,23 @@ export function chooseBeacon(
   return nearest;
 }
 
+/**
+ * The longest line the pointer's label may have, characters: at its 15 px bold type some 9 px each,
+ * 33 of them and the label's pill fit a phone's 390 px view beside the depth gauge (364 px; a
+ * line of 49 ran off the right edge).
+ */
+export const LABEL_LINE_MAX = 33;
+
+/**
+ * What the pointer's label adds while the boat goes away from its target (`missWarning` is `left`
+ * m, >= 0): two lines of at most LABEL_LINE_MAX characters.
+ * @throws RangeError when `left` is not finite or negative.
+ */
+export function missWarningText(left: number): string {
+  if (!Number.isFinite(left) || left < 0) throw new RangeError(`missWarningText: left must be finite and >= 0, got ${left}`);
+  return `⚠ going away: Astern to fetch it\n(skipped in ${Math.ceil(left)} m)`;
+}
+
 /** What the pointer's label adds when the seabed rises between the hull and its beacon. */
 export const RIDGE_WARNING = '⚠ ridge in the way: climb over it';
 

@@ -50,6 +50,7 @@ import {
   layCourse,
   letGoHint,
   missWarning,
+  missWarningText,
   passedBeacon,
   ridgeInWay,
 } from './beacons';
@@ -2566,7 +2567,7 @@ function draw(): void {
     // Moving away from the target left behind: how far on it counts as missed, with a low call once.
     const left = state.over ? Number.NaN : missWarning(handles.beacons, aim.index, hxw, goingX());
     if (!Number.isNaN(left)) {
-      pointer.text += `\n⚠ going away: Astern to fetch it (skipped in ${Math.ceil(left)} m)`;
+      pointer.text += `\n${missWarningText(left)}`;
       if (missWarned !== aim.index) sound.chime(392, 0.2);
     }
     missWarned = Number.isNaN(left) ? -1 : aim.index;

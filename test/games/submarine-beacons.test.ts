@@ -14,12 +14,14 @@ import {
   beaconName,
   catchesBeacon,
   chooseBeacon,
+  LABEL_LINE_MAX,
   LEG_MAX,
   LEG_MIN_SHARE,
   lastBeacon,
   layCourse,
   MINE_WARNING,
   missWarning,
+  missWarningText,
   passedBeacon,
   RIDGE_CLEAR_BELOW,
   RIDGE_WARNING,
@@ -93,6 +95,21 @@ describe('submarine beacon pointer', () => {
       if (passedBeacon(beacons, 1, x + 0.5)) expect(missWarning(beacons, 1, x, 2)).toBeGreaterThanOrEqual(0);
     expect(() => missWarning(beacons, 3, 0, 0)).toThrow(/missWarning: i/);
     expect(() => missWarning(beacons, 1, Number.NaN, 0)).toThrow(/missWarning: x/);
+  });
+
+  it('missWarningText: the going-away warning fits a phone: every line at most LABEL_LINE_MAX characters (one of 49 ran off 390 px)', () => {
+    for (const left of [0, 0.2, 9.5, BEACON_PASSED, 999]) {
+      const text = missWarningText(left);
+      expect(text).toContain('Astern');
+      expect(text).toContain(`skipped in ${Math.ceil(left)} m`);
+      for (const line of text.split('\n')) expect(line.length, line).toBeLessThanOrEqual(LABEL_LINE_MAX);
+    }
+    // The other warning lines the label can carry fit the same width.
+    for (const line of [RIDGE_WARNING, MINE_WARNING.over, MINE_WARNING.under])
+      expect(line.length, line).toBeLessThanOrEqual(LABEL_LINE_MAX);
+    for (const line of beaconLabel(485, -120, true, '', 'F').split('\n')) expect(line.length, line).toBeLessThanOrEqual(LABEL_LINE_MAX);
+    expect(() => missWarningText(-1)).toThrow(RangeError);
+    expect(() => missWarningText(Number.NaN)).toThrow(RangeError);
   });
 
   it('a target overshot by more than BEACON_PASSED along x is passed: the target moves on ahead, never to one far behind; the finish is never passed', () => {
