@@ -384,6 +384,11 @@ const game = await startPixiGame({
         happeningBeforeReplay = happening;
         shownHolesBeforeReplay = shownHoles.slice();
         replay.play();
+        // The replay starts from the level's start: the last fall's words and effects go at once
+        // (its first frame showed "Swallowed! 2 lives left" and how to fly on).
+        happening = 'level';
+        death.start = -Infinity;
+        swallow.active = false;
         predictor = createPredictor(bh);
         updateStatus(true);
       },
@@ -612,6 +617,7 @@ window.addEventListener('keydown', (e) => {
   if (e.repeat || keysDown.has(dir)) return;
   keysDown.add(dir);
   press(dir, eventMs(e));
+  previewWhilePaused();
 });
 /**
  * Leaves the replay playing (any key, a tap or click on the field, the status or the buttons under
@@ -705,6 +711,7 @@ style.textContent = `
    kept, so the scene under it does not jump. */
 @media (max-width: 600px) { .bh-status .bh-message { min-height: 2.8em; } .bh-status .bh-numbers { font-size: 13px; } }
 .bh-status.over .bh-message { color: #ff8c8c; cursor: pointer; }
+.bh-status.paused .bh-message { color: #fff; font-weight: 700; }
 .bh-status.cleared .bh-message { color: #7ee787; cursor: pointer; font-weight: 600; }
 .bh-pad button { font-size: 22px; min-width: 56px; }
 /* A pressed arrow lights within its rounded corners: no square tap highlight or focus ring past them. */
@@ -775,6 +782,20 @@ const extras = createButtonBar(
   { label: 'path and replay', touchOnly: false },
 );
 extras.element.classList.add('bh-extras');
+/** Whether the Path button last showed the path on (`showPathToggle`), null before the first frame. */
+let pathShown: boolean | null = null;
+/**
+ * Shows on the Path button whether the path is on (lit, aria-pressed), however it was switched (F,
+ * the button, the panel's box), and has that frame drawn at once: paused, a slow GPU's pacing left
+ * the old picture up, so the switch looked like it did nothing. Called every frame; acts on a change.
+ */
+function showPathToggle(): void {
+  if (pathShown === params.path) return;
+  pathShown = params.path;
+  extras.setActive(0, params.path);
+  extras.buttons[0]!.setAttribute('aria-pressed', String(params.path));
+  game.drawNext();
+}
 for (const [i, dir] of DIRS.entries()) pad.buttons[i]!.dataset.dir = dir;
 // A finger (or the mouse) held on the pad slides from arrow to arrow: the thrust follows the arrows
 // under it, so the thumb steers without lifting (each button alone keeps its pointer captured and
@@ -859,6 +880,13 @@ const setAction = createActionButton('Level 2 ▶', () => advance());
 let shownAction = '';
 let shownNumbers = '',
   shownMessage = '';
+/**
+ * The pause's words in one line ("Paused: P to resume", the kit's two lines joined as `pausedWords`
+ * joins them) while they show, else '': written in the status row's message line above the field
+ * (`updateStatus`), clear of the field. Drawn in the band above the finish line, they lay over the
+ * top of a path that reaches the line and next to the line itself.
+ */
+let pauseWords = '';
 
 /**
  * The game-over card, over the field beside the Continue / Play again button (above it on a narrow
@@ -914,12 +942,13 @@ const REPLAY_LINE = {
 };
 
 /**
- * Writes the numbers line from `parts` (text, whether it can be left out; empty ones skipped) on one
- * line: where it does not fit the status row's width (a phone's, with a replay's clock or the fuel),
- * the parts that can go are left out, last first, and then the gaps narrowed. A second line pushed
- * the field down under the pad during a replay.
+ * Writes the numbers line from `parts` (text, whether it can be left out, and a shorter form if it
+ * has one; empty ones skipped) on one line: where it does not fit the status row's width (a phone's,
+ * with a replay's clock or the fuel; the desktop's beside the open settings panel), the parts that
+ * can go are left out, last first, then the gaps narrowed, then the short forms used, last first. A second line
+ * pushed the field down under the pad during a replay.
  */
-function fitNumbers(parts: ReadonlyArray<readonly [string, boolean]>): void {
+function fitNumbers(parts: ReadonlyArray<readonly [string, boolean, string?]>): void {
   const kept = parts.filter(([p]) => p !== '');
   const fits = (): boolean => numbers.scrollWidth <= numbers.clientWidth + 1;
   numbers.textContent = kept.map(([p]) => p).join('   ');
@@ -929,6 +958,12 @@ function fitNumbers(parts: ReadonlyArray<readonly [string, boolean]>): void {
     numbers.textContent = kept.map(([p]) => p).join('   ');
   }
   if (!fits()) numbers.textContent = kept.map(([p]) => p).join('  ');
+  const texts = kept.map(([p]) => p);
+  for (let i = kept.length - 1; i >= 0 && !fits(); i--) {
+    if (kept[i]![2] === undefined) continue;
+    texts[i] = kept[i]![2]!;
+    numbers.textContent = texts.join('  ');
+  }
 }
 
 /**
@@ -955,7 +990,32 @@ function replayClock(): number {
   return run.parked && !run.waiting ? 0 : run.time - run.attemptStart;
 }
 
+/** The status row's right padding now, px (`keepStatusOffPanel`). */
+let statusPad = -1;
+/**
+ * Pads the status row's right end clear of the settings panel where the panel lies over it (on the
+ * desktop the panel opens over the page's top right corner and hid the end of the numbers line, "Best
+ * 6" cut to "Best"): the lines are then fitted to the room left of it. Not where the panel would leave
+ * the row less than half its width (a phone's drawer covers the page's width; it pauses the game).
+ * @returns whether the padding changed (the lines are to be fitted again).
+ */
+function keepStatusOffPanel(): boolean {
+  const side = pageLayout().side,
+    row = status.getBoundingClientRect();
+  let pad = 0;
+  if (side.offsetWidth > 0) {
+    const r = side.getBoundingClientRect();
+    if (r.top < row.bottom && row.top < r.bottom && r.left < row.right && r.left > row.left + row.width / 2)
+      pad = Math.ceil(row.right - r.left + 8);
+  }
+  if (pad === statusPad) return false;
+  statusPad = pad;
+  status.style.paddingRight = pad > 0 ? `${pad}px` : '';
+  return true;
+}
+
 function updateStatus(force = false): void {
+  if (keepStatusOffPanel()) force = true;
   // The classic game's hole count follows the field (a crossing adds a hole).
   if (!levels && params.holes !== bh.holes.length && bh.holes.length > 0) {
     params.holes = bh.holes.length;
@@ -963,15 +1023,15 @@ function updateStatus(force = false): void {
   }
   const lives = `Lives ${'♥'.repeat(bh.lives)}${'♡'.repeat(Math.max(0, bh.params.lives - bh.lives))}`;
   // The parts of the numbers line, the ones it can go without (for `fitNumbers`) marked.
-  const parts: Array<[string, boolean]> = run
+  const parts: Array<[string, boolean, string?]> = run
     ? [
-        [`Level ${run.spec.level}`, false],
+        [`Level ${run.spec.level}`, false, `L${run.spec.level}`],
         [lives, replay.player !== null],
         // The holes on the field (none while the next level waits to begin).
         [run.waiting ? '' : `Holes ${bh.holes.length}`, true],
         // The rings flown through (the line counts once all are).
         [run.waiting || run.rings.length === 0 ? '' : `Ring ${run.ringsTaken}/${run.rings.length}`, false],
-        [`Score ${bh.score}`, false],
+        [`Score ${bh.score}`, false, `★${bh.score}`],
         [`Best ${Math.max(best, bh.score)}`, true],
         // In a replay the fuel may go (then the lives) so the replay's clock fits a phone's line.
         [Number.isFinite(run.fuelLeft) ? `Fuel ${run.fuelLeft.toFixed(1)} s` : '', replay.player !== null],
@@ -981,19 +1041,25 @@ function updateStatus(force = false): void {
         [`Score ${bh.score} (1 a hole)`, false],
         [`Holes ${bh.holes.length}`, true],
       ];
-  if (replay.player) parts.push([`▶ Replay ${run ? `attempt ${Math.max(1, run.attempts)} · ` : ''}${replayClock().toFixed(1)} s`, false]);
+  if (replay.player) {
+    const clock = `${replayClock().toFixed(1)} s`,
+      attempt = run ? Math.max(1, run.attempts) : 0;
+    parts.push([`▶ Replay ${run ? `attempt ${attempt} · ` : ''}${clock}`, false, `▶ ${run ? `#${attempt} · ` : ''}${clock}`]);
+  }
   const n = parts.map(([p]) => p).join('|');
   if (force || n !== shownNumbers) {
     shownNumbers = n;
     fitNumbers(parts);
   }
   // While a replay plays, the line says how to leave it (`leaveReplay`) instead of the run's messages.
-  const said = replay.player ? (touch ? REPLAY_LINE.touch : REPLAY_LINE.keys) : bh.message;
+  const said = replay.player ? (touch ? REPLAY_LINE.touch : REPLAY_LINE.keys) : pauseWords || bh.message;
   if (force || said !== shownMessage) {
     shownMessage = said;
+    status.classList.toggle('paused', pauseWords !== '' && !replay.player);
     // The rules speak of keys; on a touch screen a tap does the same, and a clear's line is shortened
     // as far as it must to keep to the two lines the status row holds (`fitMessage`).
-    if (replay.player || !touch) message.textContent = replay.player ? said : overMessage(bh.message);
+    if (replay.player || pauseWords) message.textContent = said;
+    else if (!touch) message.textContent = overMessage(bh.message);
     else fitMessage(touchStatusLines(overMessage(bh.message)));
   }
   status.classList.toggle('over', bh.over);
@@ -2072,83 +2138,14 @@ function drawCoach(x: number, sx: number, sy: number, k: number): void {
 /**
  * Over the field while paused: the scene dimmed and "Paused", so a pause is not taken for a hang. It
  * lies under the ship, the predicted path and the captions (the path stays bright while the player
- * thinks); its words are drawn by the game in one line over the finish line (`pauseLine`).
+ * thinks); its words are written in the status row above the field (`pauseWords`).
  */
 const pause = createPauseOverlay({ label: 'paused', shadeAlpha: 0.35 });
 app.stage.addChildAt(pause.container, app.stage.getChildIndex(overlay));
 pause.words.visible = false;
-/**
- * The pause's words in one line ("Paused: P to resume", the kit's two lines joined as `pausedWords`
- * joins them), in a fixed place: centred in the band between the field's top and the finish line,
- * where no hole, path to steer by or waiting ship is (placed off the path, they followed the ship
- * about and sat over the holes). Drawn above everything on the field.
- */
-const pauseLine = new Text({
-  text: '',
-  style: { fill: 0xffffff, fontWeight: '800', fontFamily: 'system-ui, sans-serif', stroke: { color: 0x000000, width: 5 } },
-});
-pauseLine.anchor.set(0.5);
-pauseLine.visible = false;
-app.stage.addChild(pauseLine);
-/** The field's width, px, and the words the pause line's size was last fitted to (`drawPauseLine`). */
-let pauseFit = '';
-
-/**
- * Shows `pauseLine` when `show`: its size fits the band above the finish line (at most 24 px, its
- * drawn height, outline included, 4 px less than the band's, down to 10 px) and the field's width; centred, or off a ship waiting in the band.
- */
+/** Shows the pause's words (`pauseWords`) when `show`, else none. */
 function drawPauseLine(show: boolean): void {
-  pauseLine.visible = show;
-  if (!show) return;
-  const text = pause.text.split('\n').join(': ');
-  if (pauseLine.text !== text) pauseLine.text = text;
-  const cam = renderer.camera;
-  const top = cam.toScreenY(playField.height),
-    line = cam.toScreenY(bh.lineY),
-    room = cam.toScreenLength(playField.width) - 16;
-  const fit = `${room}:${line - top}:${text}`;
-  if (pauseFit !== fit) {
-    pauseFit = fit;
-    let size = Math.max(12, Math.min(24, Math.floor(0.6 * (line - top))));
-    pauseLine.style.fontSize = size;
-    if (pauseLine.width > room) size = Math.max(12, Math.floor((size * room) / pauseLine.width));
-    pauseLine.style.fontSize = size;
-    // The words (and their outline) stay inside the band, clear of the finish line and the path under it.
-    while (size > 10 && pauseLine.height > line - top - 4) pauseLine.style.fontSize = --size;
-  }
-  // Between levels the ship waits past the line, in the band: the words then stand beside it, on the
-  // roomier side, where they fit there, else just under the line (no play goes on there meanwhile).
-  let x = cam.toScreenX(playField.width / 2),
-    y = (top + line) / 2;
-  const sx = cam.toScreenX(lastShip[0]!),
-    x0 = cam.toScreenX(0),
-    x1 = cam.toScreenX(playField.width),
-    half = pauseLine.width / 2,
-    clear = shipPx + 8;
-  if (lastShip[1]! > bh.lineY - 1 && Math.abs(sx - x) < half + clear) {
-    const right = x1 - sx > sx - x0;
-    const [l, r] = right ? [sx + clear, x1 - 4] : [x0 + 4, sx - clear];
-    if (r - l >= 2 * half) x = (l + r) / 2;
-    else y = line + (line - top) / 2 + 4;
-  }
-  pauseLine.position.set(x, y);
-}
-
-/**
- * Moves the path's words (`pathHint`, `pathLabel`) that overlap the pause's words this frame to just
- * under them and the finish line: a path that reaches the line ends in the pause's band, where its
- * words were drawn over "Paused".
- */
-function keepOffPauseLine(): void {
-  if (!pauseLine.visible) return;
-  const p = pauseLine.getBounds();
-  // Under the words and under the finish line, which lies just beneath them.
-  const below = Math.max(p.y + p.height, renderer.camera.toScreenY(bh.lineY) + 2) + 4;
-  for (const t of [pathHint, pathLabel]) {
-    if (!t.visible) continue;
-    const b = t.getBounds();
-    if (b.x < p.x + p.width && p.x < b.x + b.width && b.y < p.y + p.height && p.y < b.y + b.height) t.y += below - b.y;
-  }
+  pauseWords = show ? pause.text.split('\n').join(': ') : '';
 }
 
 /** Gap kept between the touch card and the field's frame and the finish line, px. */
@@ -2238,6 +2235,20 @@ function placeActionButton(): void {
   if (el.style.top !== want) el.style.top = want;
 }
 
+/**
+ * An arrow pressed while paused: the paused path becomes the one that arrow (with the others held)
+ * would fly, a planning preview, drawn at once; the ship does not move and nothing is applied until
+ * the game resumes (a key let go while paused lets go at once, `release`).
+ */
+function previewWhilePaused(): void {
+  if (!shell.paused || replay.player) return;
+  const want = (!run || canThrust(bh, run)) && !readying() ? heldThrust(held) : 'none';
+  if (want === 'none') return;
+  pausedThrust = want;
+  pausedGame = bh;
+  game.drawNext();
+}
+
 /** Whether the last frame was drawn paused, and the thrust when the pause began (the paused path's). */
 let wasPaused = false,
   pausedThrust: BlackHoleGame['thrust'] = 'none',
@@ -2250,6 +2261,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   }
   if (!shell.paused && wasPaused) resumedAt = performance.now();
   wasPaused = shell.paused;
+  showPathToggle();
   coachText.visible = false;
   // The overlay stays right under the ship and its path (layers added later go above them).
   if (pause.container.parent === app.stage && app.stage.getChildIndex(pause.container) !== app.stage.getChildIndex(overlay) - 1) {
@@ -2281,8 +2293,8 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     // would take, the engine spooling up from rest as in flight, so a newcomer sees the aid before
     // moving. The thrust is set for the prediction only (the field, not setThrust: no exhaust, no
     // input recorded) and put back at once.
-    // Paused, the path is the course at the moment of the pause: arrows pressed while the world
-    // stands still do not redraw it (trying each way with the clock stopped would make levels 1-3 trivial).
+    // Paused, the path is the course at the moment of the pause, or the one an arrow pressed while
+    // paused would fly (`previewWhilePaused`): the ship does not move meanwhile.
     const liveThrust = bh.thrust;
     if (shell.paused) bh.thrust = pausedThrust;
     const fromPad = (run ? run.parked && canThrust(bh, run) : bh.parked) && bh.thrust === 'none';
@@ -2354,7 +2366,6 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   // One message at a time: paused over a fall's words (which then say it) or the game-over card, the
   // pause's own words are not drawn (the shade still dims the field).
   drawPauseLine(shell.paused && !deathText.visible && !bh.over);
-  keepOffPauseLine();
   const age = performance.now() - swallow.start;
   if (swallow.active && age > SWALLOW_MS) swallow.active = false;
   if (swallow.active) {
@@ -2525,12 +2536,13 @@ shell.expose({
   pauseOverlay: (): { visible: boolean; text: string; words: boolean } => ({
     visible: pause.visible,
     text: pause.text,
-    words: pauseLine.visible,
+    words: pauseWords !== '' && message.textContent === pauseWords,
   }),
-  /** The pause's words' box in the last frame, px in the canvas: [left, top, right, bottom]. */
+  /** The box of the message line that holds the pause's words, px from the canvas's top left: [left, top, right, bottom]. */
   pauseWordsBox: (): number[] => {
-    const b = pauseLine.getBounds();
-    return [b.x, b.y, b.x + b.width, b.y + b.height];
+    const b = message.getBoundingClientRect(),
+      c = app.canvas.getBoundingClientRect();
+    return [b.left - c.left, b.top - c.top, b.right - c.left, b.bottom - c.top];
   },
   /** How many of the last frame's path dots and ship points (what captions keep off) lie in the box [l, t, r, b], px in the canvas. */
   dotsIn: (l: number, t: number, r: number, b: number): number => dotsIn(l, t, r, b, 0),

@@ -93,3 +93,96 @@ describe('black hole on a phone, the path and the continue panel', () => {
     expect(covered.hits).toEqual([]);
   });
 });
+
+describe('black hole on a phone, paused and replaying', () => {
+  type Cam = { toScreenY(y: number): number };
+  type W = {
+    paused: boolean;
+    reset(): void;
+    step(): void;
+    pathPoints(): number;
+    pathTip(): number[];
+    ship(): number[];
+    pauseOverlay(): { visible: boolean; words: boolean };
+    pauseWordsBox(): number[];
+    deathEffect(): { shown: boolean };
+    pacer: { drawn: number };
+    renderer: { camera: Cam };
+    level: { parked: boolean };
+    bh: {
+      lives: number;
+      ship: number;
+      holes: number[];
+      field: { height: number };
+      world: { components: { Position: { x: Float64Array; y: Float64Array } } };
+    };
+  };
+  it('paused, the Path button shows its state and redraws at once, an arrow previews its path, and the words stand above the field', async () => {
+    const pathButton = g.page.getByRole('button', { name: 'predicted path on / off (F)' });
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as W;
+      w.reset();
+      w.paused = true;
+    });
+    const before = await g.waitFor(() => {
+      const w = window.game as unknown as W;
+      return w.pauseOverlay().visible && w.pathPoints() > 0 ? { tip: w.pathTip(), ship: w.ship(), drawn: w.pacer.drawn } : null;
+    }, null);
+    expect(await pathButton.getAttribute('aria-pressed')).toBe('true');
+    // The words in the status row, above the field's frame (they lay over the path's top and the line).
+    const words = await g.page.evaluate(() => {
+      const w = window.game as unknown as W;
+      return { box: w.pauseWordsBox(), top: w.renderer.camera.toScreenY(w.bh.field.height), words: w.pauseOverlay().words };
+    });
+    expect(words.words).toBe(true);
+    expect(words.box[3]!, JSON.stringify(words)).toBeLessThanOrEqual(words.top);
+    // Path off: the button says so, and the frame without the path is drawn (not left to the GPU's pace).
+    const b = (await pathButton.boundingBox())!;
+    await g.page.touchscreen.tap(b.x + b.width / 2, b.y + b.height / 2);
+    const off = await g.waitFor(() => {
+      const w = window.game as unknown as W;
+      return w.pathPoints() === 0 ? { drawn: w.pacer.drawn } : null;
+    }, null);
+    await g.frames(1);
+    expect(await pathButton.getAttribute('aria-pressed')).toBe('false');
+    expect(await g.page.evaluate(() => (window.game as unknown as W).pacer.drawn)).toBeGreaterThan(before.drawn);
+    expect(off.drawn).toBeGreaterThanOrEqual(before.drawn);
+    await g.page.touchscreen.tap(b.x + b.width / 2, b.y + b.height / 2);
+    await g.waitFor(() => (window.game as unknown as W).pathPoints() > 0 || null, null);
+    expect(await pathButton.getAttribute('aria-pressed')).toBe('true');
+    // → pressed while paused: the path shown bends right (a planning preview, at least 0.5 m further
+    // right at its tip), and the ship stays where it was.
+    await g.page.keyboard.press('ArrowRight');
+    const preview = await g.waitFor((x0: number) => {
+      const w = window.game as unknown as W;
+      const tip = w.pathTip();
+      return tip.length > 0 && tip[0]! > x0 + 0.5 ? { tip, ship: w.ship() } : null;
+    }, before.tip[0]!);
+    expect(preview.ship).toEqual(before.ship);
+    await g.page.evaluate(() => {
+      (window.game as unknown as W).paused = false;
+    });
+  });
+
+  it("a replay begun after a fall shows none of the fall's words, and its numbers line keeps the clock on one line", async () => {
+    // Level 3's first hole lies straight above the pad: ↑ held flies into it (a real flight, which the replay plays back).
+    await g.page.evaluate(() => (window.game as unknown as W).reset());
+    await g.page.keyboard.down('ArrowUp');
+    const fell = await g.waitFor(() => {
+      const w = window.game as unknown as W;
+      return w.deathEffect().shown ? { lives: w.bh.lives } : null;
+    }, null);
+    await g.page.keyboard.up('ArrowUp');
+    expect(fell.lives).toBe(2);
+    await g.page.keyboard.press('v');
+    await g.frames(1);
+    const seen = await g.page.evaluate(() => {
+      const n = document.querySelector<HTMLElement>('[data-hud="numbers"]')!;
+      return { shown: (window.game as unknown as W).deathEffect().shown, text: n.textContent, fits: n.scrollWidth <= n.clientWidth + 1 };
+    });
+    expect(seen.shown).toBe(false);
+    expect(seen.text).toMatch(/▶.*\d\.\d s$/);
+    expect(seen.fits, seen.text ?? '').toBe(true);
+    await g.page.keyboard.press('v');
+  });
+});
