@@ -76,7 +76,8 @@ describe('rotating cube (desktop)', () => {
     // 30 or 31 steps of 1/60 s counted (the first update after the start only reads the time): 0.25 of the ring, within a step.
     expect(holding.hold).toBeGreaterThan(0.24);
     expect(holding.hold).toBeLessThan(0.27);
-    expect(holding.closeness).toBeGreaterThan(0.99);
+    // The meter is read from the status row, worked out from ω each update; the guides' own figure is
+    // the last drawn frame's, which a slow machine's frame pacer may not have drawn yet.
     await g.frames(6);
     expect(await g.page.locator('[data-hud="challenge"]').textContent()).toContain('▰▰▰▰▰▰▰▰▰▰ holding');
     // S torques against the target: once ω's tip leaves the target the torque arrow meets the gap head-on.
