@@ -36,7 +36,7 @@ function held(level: number, s: number, turn: number, wander: number): number {
 }
 
 describe('wrecking-ball: aiming topples (next to) nothing', () => {
-  it('at most 5 pieces fall over the drags held 4 s at every structure of levels 1 to 5', { timeout: 900_000 }, () => {
+  it('at most 4 pieces fall over the drags held 4 s at every structure of levels 1 to 5', { timeout: 900_000 }, () => {
     const rows: string[] = [];
     let down = 0,
       drags = 0;
@@ -44,7 +44,6 @@ describe('wrecking-ball: aiming topples (next to) nothing', () => {
       const n = groups(buildWreckingBall(createPhysicsWorld(wreckingBallWorldOptions()), { level, openStart: true }).pieces).length;
       for (let s = 0; s < n; s++)
         for (const [turn, wander] of [
-          [0, 25],
           [90, 30],
           [180, 40],
         ] as const) {
@@ -55,10 +54,12 @@ describe('wrecking-ball: aiming topples (next to) nothing', () => {
         }
     }
     console.log(`${rows.join('\n')}\npieces down while aiming: ${down} over ${drags} drags`);
-    // Measured: 5 (level 3's tallest tower's top cube, struck low: the hook over it swings its chain
-    // past the top; level 5's shielded tower swept half round). Before the hook went round tall
-    // towers, the line turned the ball round the hook and braked it: 73 over the same 78 drags. Bound:
-    // the measured.
-    expect(down).toBeLessThanOrEqual(5);
+    // Two directions a structure, the ones that sweep the ball round (across and away): the straight
+    // drag knocked 1 piece in 26 and is covered by wrecking-ball-pull.test.ts's gestures. Measured: 4
+    // over these 52 drags (level 3's tallest tower's top cube, struck low: the hook over it swings its
+    // chain past the top; level 5's shielded tower swept half round). Before the hook went round tall
+    // towers, the line turned the ball round the hook and braked it: 73 over 78 drags in three
+    // directions. Bound: the measured.
+    expect(down).toBeLessThanOrEqual(4);
   });
 });
