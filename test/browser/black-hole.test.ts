@@ -1524,45 +1524,32 @@ describe('black hole, a stranger on a phone (issue 34)', () => {
     const right = (await p.page.getByRole('button', { name: 'thrust right', exact: true }).boundingBox())!;
     const cdp = await p.page.context().newCDPSession(p.page);
     const at = { x: right.x + right.width / 2, y: right.y + right.height / 2, id: 1 };
+    /** What a flight did: the ship's greatest x (m), and whether it was lost (a reset or "Lost"). */
+    type Track = { steps: number; resets: number; x0: number; maxX: number; lost: boolean; hold: number };
     const fly = async (ms: number) => {
-      await p.page.evaluate(() => {
+      const start = await p.page.evaluate(() => {
         const w = window.game as unknown as Phone;
-        const track = { maxX: -Infinity, lost: false, steps: w.bh.world.steps, resets: w.bh.resets, x0: w.ship()[0]! };
-        (window as unknown as { track: typeof track }).track = track;
-        const each = () => {
-          track.maxX = Math.max(track.maxX, w.ship()[0]!);
-          if (w.bh.resets !== track.resets || w.bh.message.startsWith('Lost')) track.lost = true;
-          requestAnimationFrame(each);
-        };
-        requestAnimationFrame(each);
+        return { steps: w.bh.world.steps, resets: w.bh.resets, x0: w.ship()[0]! };
       });
+      const track: Track = { ...start, maxX: start.x0, lost: false, hold: Math.round((ms / 1000) * 60) };
+      /** Follows the flight one step: the greatest x and a loss; the track once `steps` steps have passed since the press. */
+      const follow = (t: Track & { until: number }) => {
+        const w = window.game as unknown as Phone;
+        t.maxX = Math.max(t.maxX, w.ship()[0]!);
+        if (w.bh.resets !== t.resets || w.bh.message.startsWith('Lost')) t.lost = true;
+        return w.bh.world.steps - t.steps >= t.until || t.lost ? t : null;
+      };
       await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: [at] });
-      // Held for `ms` of game time (60 steps a second), not of the wall clock: on a loaded machine a
-      // second of the wall clock carried less game time, and the ship flew less far.
-      await p.waitFor(
-        (n) => {
-          const w = window.game as unknown as Phone;
-          return w.bh.world.steps - (window as unknown as { track: { steps: number } }).track.steps >= n;
-        },
-        Math.round((ms / 1000) * 60),
-        60_000,
-      );
+      // Held for `ms` of game time (60 steps a second), stepped at once (not the wall clock: on a
+      // loaded machine a second of it carried less game time, and the ship flew less far).
+      const held = await p.runUntil(follow, { ...track, until: track.hold }, { draw: false });
       await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
-      // 7 s of game time after the press, however slow the machine: long enough to reach the wall and turn.
-      await p.waitFor(
-        () => {
-          const w = window.game as unknown as Phone;
-          const t = (window as unknown as { track: { steps: number; lost: boolean } }).track;
-          return w.bh.world.steps - t.steps > 7 * 60 || t.lost;
-        },
-        null,
-        90_000,
+      // 7 s of game time after the press: long enough to reach the wall and turn.
+      const t = await p.runUntil(follow, { ...held, until: 7 * 60 + 1 }, { draw: false });
+      return p.page.evaluate(
+        (t) => ({ edge: (window.game as unknown as Phone).bh.field.width - t.maxX, travel: t.maxX - t.x0, lost: t.lost }),
+        t,
       );
-      return p.page.evaluate(() => {
-        const w = window.game as unknown as Phone;
-        const t = (window as unknown as { track: { maxX: number; lost: boolean; x0: number } }).track;
-        return { edge: w.bh.field.width - t.maxX, travel: t.maxX - t.x0, lost: t.lost };
-      });
     };
     const long = await fly(1000);
     expect(long.lost, JSON.stringify(long)).toBe(false);
@@ -1570,7 +1557,7 @@ describe('black hole, a stranger on a phone (issue 34)', () => {
     // It did fly aside into the wall's band, not nowhere.
     expect(long.travel, JSON.stringify(long)).toBeGreaterThan(4);
     await p.page.evaluate(() => (window.game as unknown as { reset(): void }).reset());
-    await p.page.waitForTimeout(300);
+    await p.runFrames(2);
     const nudge = await fly(500);
     expect(nudge.lost, JSON.stringify(nudge)).toBe(false);
     expect(nudge.travel, JSON.stringify(nudge)).toBeGreaterThan(1);
