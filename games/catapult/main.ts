@@ -2412,6 +2412,10 @@ shell.expose({
   jumpCamera: (): void => {
     framedFor = '';
   },
+  /** Ends the level's opening look at the castle now, as a player's first touch does (tests that frame each level's aim view). */
+  endOpening: (): void => {
+    openingFrames = 0;
+  },
   /** The level's tally now. */
   tally: (): Tally => tally(shell.world, lv),
   /** Shots left, and the thrown projectiles' handles. */
