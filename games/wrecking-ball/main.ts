@@ -759,7 +759,7 @@ const cameraVelocity = new Vector3(),
   targetVelocity = new Vector3();
 /**
  * The widened framing: whether the camera is given it rather than the site's (for the rest of the
- * level once it is), the ball's places it takes in (m), when it was last widened (page seconds) and
+ * level once it is), the ball's places it takes in (m), when it was last widened (camera seconds, see cameraNow) and
  * how many times it widened for a piece knocked off the screen (`lostPiece`).
  */
 const widen = { on: false, balls: [] as Vector3[], at: -1e9, wreckage: 0 };
@@ -1195,8 +1195,24 @@ const followGoal = new Vector3(),
   followWant = new Vector3(),
   followBall = [0, 0, 0],
   followNdc = new Vector3();
-/** Page time, s, of the camera's last update. */
+/** The camera's clock (`cameraNow`), s, at its last update. */
 let cameraTime = -1;
+/** The camera's clock, s, and the page's and the world's times, s, at its last reading (page -1: never read). */
+const cameraClock = { t: 0, page: -1, world: 0 };
+/**
+ * The camera's clock, s: it goes by with the world's time while the game runs, so the camera keeps
+ * pace with the ball however fast the frames come (a slow machine's dropped time, a test's frames
+ * run at once), and with the page's time while the game is paused (the camera still eases to a
+ * framing); 0.1 s at most a reading.
+ */
+function cameraNow(): number {
+  const page = performance.now() / 1000;
+  const step = shell.paused ? page - cameraClock.page : shell.world.time - cameraClock.world;
+  if (cameraClock.page >= 0) cameraClock.t += Math.min(0.1, Math.max(0, step));
+  cameraClock.page = page;
+  cameraClock.world = shell.world.time;
+  return cameraClock.t;
+}
 /**
  * Moves `current` toward `goal` (m) over `dt` s as a critically damped spring with velocity
  * `velocity` (m/s, updated): smooth time CAMERA_EASE / 2 s, exact for any `dt` >= 0 (the closed
@@ -1317,8 +1333,8 @@ function lostPiece(position: Vector3, target: Vector3): boolean {
 /** Eases the camera and its orbit target toward the framing of the site and the ball, or after the ball (see FOLLOW_EDGE). */
 function followAction(): void {
   const controls = app.controls;
-  const now = performance.now() / 1000;
-  const dt = cameraTime < 0 ? 0 : Math.min(0.1, Math.max(0, now - cameraTime));
+  const now = cameraNow();
+  const dt = cameraTime < 0 ? 0 : now - cameraTime;
   cameraTime = now;
   if (controls === null || !renderer.drawnPosition(handles.ball, followBall)) return;
   // A press aiming a swing, or the ball in the hand: the camera stops, so what is pressed stays put.
