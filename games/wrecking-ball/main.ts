@@ -110,6 +110,7 @@ import {
   settleOver,
   starsRule,
   stillFalling,
+  structureOf,
   swayAmplitude,
   swingBudget,
   swingGoal,
@@ -2223,6 +2224,11 @@ function pieceName(piece: number): string {
   const kind = handles.pieces.find((p) => p.body === piece)?.kind;
   return kind === 'planks' ? 'the plank stack' : `the ${kind ?? 'block'}`;
 }
+/** Whether pieces `a` and `b` (bodies) stand in one structure (./scene structureOf). */
+function sameStructure(a: number, b: number): boolean {
+  const pa = handles.pieces.find((p) => p.body === a);
+  return pa !== undefined && structureOf(handles.pieces, pa).some((q) => q.body === b);
+}
 /** Whether the ball is on its run at a target now (the swing can no longer be re-aimed). */
 function onRun(): boolean {
   const moves = handles.controls.moves;
@@ -2815,8 +2821,14 @@ function hintText(): string {
     return `Glancing: the ball runs away from you and hits few blocks. Aim across the screen (${pullWords()})`;
   if (aiming.piece !== 0 && aiming.dragged && handles.controls.moves.length > 0 && aimed !== 0)
     return `Winding up… let go to re-aim this swing (no swing used): ${pullWords()}`;
-  if (aiming.piece !== 0 && aiming.dragged)
-    return `Let go to swing along the arrow: ${pullWords()}${aiming.power >= FULL_POWER_SHOWN ? '' : ', pull longer for more'}`;
+  if (aiming.piece !== 0 && aiming.dragged) {
+    // What the swing drawn in 3D shows (drawSwingPreview): a miss, or another structure in the way,
+    // said before the swing is used.
+    if (preview.meet === 0) return `The ball would miss: its dashes reach no block. Pull another way (${pullWords()})`;
+    if (!sameStructure(preview.meet, aiming.piece))
+      return `The ball meets ${pieceName(preview.meet)} first (red ring): let go to hit it, or pull another way`;
+    return `Let go: the ball swings along the dashes into the red ring: ${pullWords()}${aiming.power >= FULL_POWER_SHOWN ? '' : ', pull longer for more'}`;
+  }
   if (shell.world.time < notice.until) return notice.text;
   // Settling: the count goes on as the wreckage comes down; the end card waits for it.
   if (reachedAt >= 0)

@@ -34,7 +34,12 @@ interface Outcome {
   error: number;
 }
 
-function play(level: number, s: number, turn: number): Outcome {
+/**
+ * Plays one drag at structure `s` of level `level`, `turn` degrees off straight from the ball. With
+ * `follow`, a player who reads the preview: while it shows the ball meeting another structure or
+ * none, they turn the pull 10 degrees at a time (either way, up to 90) until it shows the aimed one.
+ */
+function play(level: number, s: number, turn: number, follow = false): Outcome {
   const world = createPhysicsWorld(wreckingBallWorldOptions());
   const h = buildWreckingBall(world, { level, openStart: true });
   for (let k = 0; k < 30; k++) step(world);
@@ -43,14 +48,23 @@ function play(level: number, s: number, turn: number): Outcome {
   const piece = group.slice().sort((a, b) => a.y0 - b.y0)[Math.floor(group.length / 3)]!;
   const P = world.components.Position;
   const straight = Math.atan2(P.z[piece.body]! - P.z[h.ball]!, P.x[piece.body]! - P.x[h.ball]!);
-  const request: SwingRequest = { direction: straight + (turn * Math.PI) / 180, speed: swingSpeed(1) };
-  // The preview as the page draws it at the drag's first move.
-  const g = swingGoal(world, h, piece.body, request);
-  const start = [g.x - g.offset * g.ux, g.height - Math.sqrt(HANG * HANG - g.offset * g.offset), g.z - g.offset * g.uz];
-  const path: number[] = [];
-  const meet = swingPath(world, h.pieces, start, [g.x, g.height, g.z], path);
   const structureOf = (body: number): number => all.findIndex((q) => q.some((p) => p.body === body));
-  const predicted = meet === 0 ? -1 : structureOf(meet);
+  const path: number[] = [];
+  /** The preview as the page draws it for a drag in direction `direction`: the structure its swing meets first (-1: none). */
+  const preview = (direction: number): number => {
+    const g = swingGoal(world, h, piece.body, { direction, speed: swingSpeed(1) });
+    const start = [g.x - g.offset * g.ux, g.height - Math.sqrt(HANG * HANG - g.offset * g.offset), g.z - g.offset * g.uz];
+    const meet = swingPath(world, h.pieces, start, [g.x, g.height, g.z], path);
+    return meet === 0 ? -1 : structureOf(meet);
+  };
+  let direction = straight + (turn * Math.PI) / 180;
+  if (follow && preview(direction) !== s) {
+    const turns = [10, -10, 20, -20, 30, -30, 40, -40, 50, -50, 60, -60, 70, -70, 80, -80, 90, -90];
+    const better = turns.find((d) => preview(direction + (d * Math.PI) / 180) === s);
+    if (better !== undefined) direction += (better * Math.PI) / 180;
+  }
+  const request: SwingRequest = { direction, speed: swingSpeed(1) };
+  const predicted = preview(direction);
   const end = path.slice(-3);
   pullBack(world, h, piece.body, request);
   for (let t = 0; t < 2; t += world.dt) step(world);
@@ -78,6 +92,19 @@ describe('wrecking-ball: the swing preview', () => {
     }
     const agree = out.filter((o) => o.predicted === o.touched).length;
     const onTarget = out.filter((o) => o.touched === o.aimed).length;
+    // A player who reads the preview turns the drags it shows going elsewhere (the others play as before).
+    const followed = out.map((o) => {
+      if (o.predicted === o.aimed) return o;
+      const [, level, s, turn] = /^L(\d) s(\d) (-?\d+) deg$/.exec(o.label)!.map(Number);
+      return play(level!, s!, turn!, true);
+    });
+    const onTargetFollowed = followed.filter((o) => o.touched === o.aimed).length;
+    console.log(
+      followed
+        .filter((o, i) => o !== out[i])
+        .map((o) => `turned: ${o.label}: preview ${o.predicted}, touched ${o.touched} (aimed ${o.aimed})`)
+        .join('\n'),
+    );
     const errors = out
       .filter((o) => o.predicted === o.touched && o.touched >= 0)
       .map((o) => o.error)
@@ -85,7 +112,7 @@ describe('wrecking-ball: the swing preview', () => {
     const median = errors[Math.floor(errors.length / 2)] ?? Number.POSITIVE_INFINITY;
     console.log(
       `${out.map((o) => `${o.label}: preview meets ${o.predicted}, ball touched ${o.touched} (aimed ${o.aimed}), ${o.error.toFixed(2)} m`).join('\n')}\n` +
-        `preview names the structure first touched in ${agree}/${out.length}; swings touching the aimed structure first ${onTarget}/${out.length}; median miss of the drawn meeting point ${median.toFixed(2)} m`,
+        `preview names the structure first touched in ${agree}/${out.length}; swings touching the aimed structure first ${onTarget}/${out.length}, ${onTargetFollowed}/${out.length} turned as the preview shows; median miss of the drawn meeting point ${median.toFixed(2)} m`,
     );
     // Bounds: the preview is a pendulum from rest under a still hook, while the ball is let go still
     // settling from the crane's run (READY_NEAR 0.4 m, READY_STILL 1 m/s): the structure it names is
@@ -94,5 +121,10 @@ describe('wrecking-ball: the swing preview', () => {
     expect(out.length).toBeGreaterThanOrEqual(18);
     expect(agree).toBeGreaterThanOrEqual(Math.ceil((5 / 6) * out.length));
     expect(median).toBeLessThan(1.1);
+    // Read, it helps: measured 24/27 first swings touch the structure aimed at first when the drags
+    // ignore it, 25/27 when those it shows going elsewhere are turned till it shows the aimed one (the
+    // two left: level 2's structure 3 behind structure 2, which the ball, let go over it, meets first).
+    // Bound: more than the blind drags (deterministic steps: the same counts every run).
+    expect(onTargetFollowed).toBeGreaterThan(onTarget);
   });
 });
