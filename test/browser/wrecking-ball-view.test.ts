@@ -68,19 +68,23 @@ describe('wrecking ball: the aim arrow and the jib keep out of the way', () => {
       );
       if (tapped === 'none') continue;
       await g.frames(1);
-      const e = await g.page.evaluate(() => (window.game as unknown as WB).aimExtent());
-      if (e) worst.push(Math.max(e.x, e.y));
-      // The swing drawn in 3D: where the ball meets the piece tapped, on the screen and in height.
-      const p = await g.page.evaluate(
+      // The arrow's extent, and the swing drawn in 3D: where the ball meets the piece tapped, on the
+      // screen and in height (one evaluate for both).
+      const { e, p } = await g.page.evaluate(
         ([x, y]) => {
           const game = window.game as unknown as WB;
+          const e = game.aimExtent();
           const s = game.swingPreview();
-          if (!s.hit) return { shown: s.shown, px: Number.POSITIVE_INFINITY, rise: Number.POSITIVE_INFINITY };
+          if (!s.hit) return { e, p: { shown: s.shown, px: Number.POSITIVE_INFINITY, rise: Number.POSITIVE_INFINITY } };
           const at = game.app.camera.position.clone().set(s.hit[0]!, s.hit[1]!, s.hit[2]!).project(game.app.camera);
-          return { shown: s.shown, px: Math.hypot(((at.x - x) * innerWidth) / 2, ((at.y - y) * innerHeight) / 2), rise: s.hit[1]! };
+          return {
+            e,
+            p: { shown: s.shown, px: Math.hypot(((at.x - x) * innerWidth) / 2, ((at.y - y) * innerHeight) / 2), rise: s.hit[1]! },
+          };
         },
         [x, y] as const,
       );
+      if (e) worst.push(Math.max(e.x, e.y));
       // (A second tap on the piece already armed swings: the swing's own marks show then.)
       if (tapped === 'armed') previews.push(p);
     }
