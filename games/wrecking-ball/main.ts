@@ -10,7 +10,9 @@
  * Keys: A/D or ←/→ slew, W/S or ↑/↓ trolley out/in, Q/E hook up/down, L next level (once cleared),
  * G debug layer (joints, contacts), P pause, N step, R reset. Mouse: press a target and drag back
  * as with a sling, then let go: the ball swings into it along the arrow shown on the ground, harder
- * the longer the pull (while the drag is held the crane takes the hook over the target and a tagline
+ * the longer the pull; its swing is drawn in 3D over the arrow, from where the ball is drawn back to
+ * a red ring where it first meets a piece (drawSwingPreview), and the hint says if that is not the
+ * target (while the drag is held the crane takes the hook over the target and a tagline
  * draws the ball back opposite the arrow; let go, the line slips and the ball swings down into the
  * target; one aimed at another target first re-aims that swing, one during the run is swung at
  * next); a click without a drag shows
