@@ -1968,8 +1968,8 @@ function arrowFits(x0: number, z0: number, ux: number, uz: number, shift: number
 // While a swing is aimed (a press or drag on a target, an armed target, or a drag let go until the
 // ball's run begins): the ball's path as a pendulum from where the line draws it back, at the height
 // it will swing at (./scene swingGoal, swingPath), a bright dashed tube in a dark edge drawn over
-// everything (a structure or the mast in front would hide it); a faint ghost ball where the swing
-// starts; a red ghost ball with a ring facing the camera where the ball first meets a piece, and a
+// everything (a structure or the mast in front would hide it); a faint ghost ball in a pale ring
+// where the swing starts; a red ghost ball with a ring facing the camera where the ball first meets a piece, and a
 // thin line from it down to the ground. The arrow on the ground stays as its shadow. The ball's place
 // on the screen at the hit, not only across the ground, reads at once (strangers could not tell
 // where a swing drawn on the ground would go).
@@ -2010,9 +2010,22 @@ hitRingEdge.renderOrder = 13;
 hitRing.renderOrder = 14;
 hitRing.add(hitRingEdge);
 hitRingEdge.position.z = -0.01;
+/** A pale ring round the ghost ball where the swing starts, facing the camera, in a dark edge. */
+const startRing = new Mesh(
+  new RingGeometry(0.95, 1.12, 40),
+  new MeshBasicMaterial({ color: 0xfff6dc, depthTest: false, depthWrite: false, transparent: true, opacity: 0.9, side: DoubleSide }),
+);
+const startRingEdge = new Mesh(
+  new RingGeometry(0.88, 1.2, 40),
+  new MeshBasicMaterial({ color: 0x14100a, depthTest: false, depthWrite: false, transparent: true, opacity: 0.6, side: DoubleSide }),
+);
+startRingEdge.renderOrder = 12;
+startRing.renderOrder = 13;
+startRing.add(startRingEdge);
+startRingEdge.position.z = -0.01;
 const hitDrop = new Mesh(chainGeometry, new MeshBasicMaterial({ color: 0xff3b2b, transparent: true, opacity: 0.7, depthWrite: false }));
 const swingPreview = new Group();
-swingPreview.add(pathEdge, pathFill, startGhost, hitGhost, hitRing, hitDrop);
+swingPreview.add(pathEdge, pathFill, startGhost, startRing, hitGhost, hitRing, hitDrop);
 swingPreview.visible = false;
 app.scene.add(swingPreview);
 /** The previewed swing's samples (./scene swingPath: the ball's centre, x y z in turn, m) and the piece it meets first (0: none). */
@@ -2047,6 +2060,9 @@ function drawSwingPreview(): void {
   preview.meet = swingPath(shell.world, handles.pieces, start, [goal.x, goal.height, goal.z], path);
   const n = path.length / 3;
   startGhost.position.set(start[0]!, start[1]!, start[2]!);
+  startRing.position.copy(startGhost.position);
+  startRing.quaternion.copy(app.camera.quaternion);
+  startRing.scale.setScalar(BALL_RADIUS);
   // The dashes: from sample 2k to 2k + 1, drawn from the start toward the hit.
   let shown = 0;
   for (let k = 0; k < PATH_DASHES && 2 * k + 1 < n; k++) {
