@@ -1969,8 +1969,8 @@ function arrowFits(x0: number, z0: number, ux: number, uz: number, shift: number
 // ball's run begins): the ball's path as a pendulum from where the line draws it back, at the height
 // it will swing at (./scene swingGoal, swingPath), a bright dashed tube in a dark edge drawn over
 // everything (a structure or the mast in front would hide it); a faint ghost ball in a pale ring
-// where the swing starts; a red ghost ball with a ring facing the camera where the ball first meets a piece, and a
-// thin line from it down to the ground. The arrow on the ground stays as its shadow. The ball's place
+// where the swing starts (green once the held ball is there); a red ghost ball with a ring facing
+// the camera where the ball first meets a piece, and a thin line from it down to the ground. The arrow on the ground stays as its shadow. The ball's place
 // on the screen at the hit, not only across the ground, reads at once (strangers could not tell
 // where a swing drawn on the ground would go).
 /** Dashes of the drawn path (every other of the swing's samples is a gap). */
@@ -2029,7 +2029,9 @@ swingPreview.add(pathEdge, pathFill, startGhost, startRing, hitGhost, hitRing, h
 swingPreview.visible = false;
 app.scene.add(swingPreview);
 /** The previewed swing's samples (./scene swingPath: the ball's centre, x y z in turn, m) and the piece it meets first (0: none). */
-const preview = { path: [] as number[], meet: 0 };
+const preview = { path: [] as number[], meet: 0, ready: false };
+/** How near, m, the held ball's centre must be to the previewed swing's start for its ring to show it ready (./scene READY_NEAR). */
+const READY_SHOWN = 0.4;
 const dashMatrix = new Matrix4();
 const dashFrom = new Vector3(),
   dashTo = new Vector3(),
@@ -2051,6 +2053,7 @@ function drawSwingPreview(): void {
   swingPreview.visible = goal !== null;
   if (goal === null) {
     preview.meet = 0;
+    preview.ready = false;
     preview.path.length = 0;
     return;
   }
@@ -2060,6 +2063,11 @@ function drawSwingPreview(): void {
   preview.meet = swingPath(shell.world, handles.pieces, start, [goal.x, goal.height, goal.z], path);
   const n = path.length / 3;
   startGhost.position.set(start[0]!, start[1]!, start[2]!);
+  // Green once the held ball is there: let go now and it swings at once (before, it is still on its
+  // way and the swing waits for it).
+  preview.ready =
+    handles.controls.pull !== null && Math.hypot(ballAt[0]! - start[0]!, ballAt[1]! - start[1]!, ballAt[2]! - start[2]!) < READY_SHOWN;
+  (startRing.material as MeshBasicMaterial).color.setHex(preview.ready ? 0x6dff7a : 0xfff6dc);
   startRing.position.copy(startGhost.position);
   startRing.quaternion.copy(app.camera.quaternion);
   startRing.scale.setScalar(BALL_RADIUS);
@@ -3153,14 +3161,16 @@ shell.expose({
   },
   /**
    * The swing drawn in 3D (see drawSwingPreview): whether it shows, the piece its path meets first
-   * (0: none), the ball's centre where it meets it (the red ghost ball; null when it meets none) and
-   * where the swing starts (the pale ghost ball), m.
+   * (0: none), the ball's centre where it meets it (the red ghost ball; null when it meets none),
+   * where the swing starts (the pale ghost ball), m, and whether the held ball is there.
    */
   swingPreview: () => ({
     shown: swingPreview.visible,
     meet: preview.meet,
     hit: swingPreview.visible && hitGhost.visible ? hitGhost.position.toArray() : null,
     start: swingPreview.visible ? startGhost.position.toArray() : null,
+    /** Whether the held ball is at the start (its ring drawn green): let go now and it swings at once. */
+    ready: preview.ready,
   }),
   /** The piece the running swing is aimed at (0 when none), and whether its arrow shows. */
   aimed: (): { piece: number; arrow: boolean } => ({ piece: aimed, arrow: aimArrow.visible }),
