@@ -10,7 +10,9 @@
  * Keys: A/D or ←/→ slew, W/S or ↑/↓ trolley out/in, Q/E hook up/down, L next level (once cleared),
  * G debug layer (joints, contacts), P pause, N step, R reset. Mouse: press a target and drag back
  * as with a sling, then let go: the ball swings into it along the arrow shown on the ground, harder
- * the longer the pull (while the drag is held the crane takes the hook over the target and a tagline
+ * the longer the pull; its swing is drawn in 3D over the arrow, from where the ball is drawn back to
+ * a red ring where it first meets a piece (drawSwingPreview), and the hint says if that is not the
+ * target (while the drag is held the crane takes the hook over the target and a tagline
  * draws the ball back opposite the arrow; let go, the line slips and the ball swings down into the
  * target; one aimed at another target first re-aims that swing, one during the run is swung at
  * next); a click without a drag shows
@@ -110,9 +112,12 @@ import {
   settleOver,
   starsRule,
   stillFalling,
+  structureOf,
   swayAmplitude,
   swingBudget,
+  swingGoal,
   swingPar,
+  swingPath,
   swingSpeed,
   swingStars,
   type WreckingBallHandles,
@@ -757,7 +762,7 @@ const cameraVelocity = new Vector3(),
   targetVelocity = new Vector3();
 /**
  * The widened framing: whether the camera is given it rather than the site's (for the rest of the
- * level once it is), the ball's places it takes in (m), when it was last widened (page seconds) and
+ * level once it is), the ball's places it takes in (m), when it was last widened (camera seconds, see cameraNow) and
  * how many times it widened for a piece knocked off the screen (`lostPiece`).
  */
 const widen = { on: false, balls: [] as Vector3[], at: -1e9, wreckage: 0 };
@@ -775,13 +780,29 @@ const MAST_SHADOW = 1.8;
  * within MAST_SHADOW of the sight line through it); `d` itself when every turn hides one.
  */
 function clearOfMast(d: [number, number, number]): [number, number, number] {
-  for (const deg of [0, 10, -10, 20, -20, 30, -30, 40, -40]) {
-    const a = (deg * Math.PI) / 180;
-    const x = d[0] * Math.cos(a) + d[2] * Math.sin(a),
-      z = -d[0] * Math.sin(a) + d[2] * Math.cos(a);
-    if (!mastHides(x, z)) return [x, d[1], z];
-  }
+  // First a turn that also keeps the hanging ball clear of the mast on the screen (ballByMast), then
+  // one that keeps the pieces clear alone.
+  for (const withBall of [true, false])
+    for (const deg of [0, 10, -10, 20, -20, 30, -30, 40, -40]) {
+      const a = (deg * Math.PI) / 180;
+      const x = d[0] * Math.cos(a) + d[2] * Math.sin(a),
+        z = -d[0] * Math.sin(a) + d[2] * Math.cos(a);
+      if (!mastHides(x, z) && !(withBall && ballByMast(x, z))) return [x, d[1], z];
+    }
   return d;
+}
+/**
+ * How near, m, the ball's centre may hang to the line from the camera through the mast before it is
+ * drawn on the mast (in front of it or behind): its radius, the mast's half width and a ball's
+ * radius of room between them on the screen.
+ */
+const BALL_BY_MAST = 2 * BALL_RADIUS + 0.41;
+/** Whether the ball hangs, seen from a camera in direction (x, z) across the ground, on the mast (see BALL_BY_MAST). */
+function ballByMast(x: number, z: number): boolean {
+  const P = shell.world.components.Position,
+    b = handles.ball;
+  const h = Math.hypot(x, z);
+  return Math.abs((P.x[b]! * z - P.z[b]! * x) / h) < BALL_BY_MAST;
 }
 /** Whether the mast hides a standing piece from a camera in direction (x, z) across the ground (see clearOfMast). */
 function mastHides(x: number, z: number): boolean {
@@ -956,6 +977,31 @@ function mastBetween(x: number, y: number, z: number, r: number): boolean {
   if (!(u > 0 && u < 1)) return false;
   const h = c.y + u * (y - c.y);
   return h > 0 && h < JIB_HEIGHT && Math.hypot(c.x + u * dx, c.z + u * dz) < 0.41 + r;
+}
+// While the mast stands between the camera and the ball: the ball's outline drawn over the mast (a
+// pale ring in a dark edge, facing the camera), so a ball hanging or swinging behind the mast's bars
+// still shows where it is and reads as behind them.
+const ballOutline = new Mesh(
+  new RingGeometry(0.92, 1.08, 40),
+  new MeshBasicMaterial({ color: 0xf4ead2, depthTest: false, depthWrite: false, transparent: true, opacity: 0.9 }),
+);
+const ballOutlineEdge = new Mesh(
+  new RingGeometry(0.84, 1.16, 40),
+  new MeshBasicMaterial({ color: 0x14100a, depthTest: false, depthWrite: false, transparent: true, opacity: 0.6 }),
+);
+ballOutlineEdge.renderOrder = 8;
+ballOutline.renderOrder = 9;
+ballOutline.add(ballOutlineEdge);
+ballOutlineEdge.position.z = -0.01;
+ballOutline.visible = false;
+app.scene.add(ballOutline);
+/** Shows the ball's outline over the mast while the mast hides the ball drawn at `ball` (m), else hides it. */
+function outlineBehindMast(ball: ArrayLike<number>): void {
+  ballOutline.visible = mastBetween(ball[0]!, ball[1]!, ball[2]!, BALL_RADIUS);
+  if (!ballOutline.visible) return;
+  ballOutline.position.set(ball[0]!, ball[1]!, ball[2]!);
+  ballOutline.quaternion.copy(app.camera.quaternion);
+  ballOutline.scale.setScalar(BALL_RADIUS);
 }
 // A concrete pad under the mast, drawn only: 5 cm high, under the ball's lowest (its bottom 6 cm up at
 // the lowest hook), so neither the ball nor a piece knocked against the mast's foot is drawn sinking
@@ -1152,8 +1198,24 @@ const followGoal = new Vector3(),
   followWant = new Vector3(),
   followBall = [0, 0, 0],
   followNdc = new Vector3();
-/** Page time, s, of the camera's last update. */
+/** The camera's clock (`cameraNow`), s, at its last update. */
 let cameraTime = -1;
+/** The camera's clock, s, and the page's and the world's times, s, at its last reading (page -1: never read). */
+const cameraClock = { t: 0, page: -1, world: 0 };
+/**
+ * The camera's clock, s: it goes by with the world's time while the game runs, so the camera keeps
+ * pace with the ball however fast the frames come (a slow machine's dropped time, a test's frames
+ * run at once), and with the page's time while the game is paused (the camera still eases to a
+ * framing); 0.1 s at most a reading.
+ */
+function cameraNow(): number {
+  const page = performance.now() / 1000;
+  const step = shell.paused ? page - cameraClock.page : shell.world.time - cameraClock.world;
+  if (cameraClock.page >= 0) cameraClock.t += Math.min(0.1, Math.max(0, step));
+  cameraClock.page = page;
+  cameraClock.world = shell.world.time;
+  return cameraClock.t;
+}
 /**
  * Moves `current` toward `goal` (m) over `dt` s as a critically damped spring with velocity
  * `velocity` (m/s, updated): smooth time CAMERA_EASE / 2 s, exact for any `dt` >= 0 (the closed
@@ -1274,8 +1336,8 @@ function lostPiece(position: Vector3, target: Vector3): boolean {
 /** Eases the camera and its orbit target toward the framing of the site and the ball, or after the ball (see FOLLOW_EDGE). */
 function followAction(): void {
   const controls = app.controls;
-  const now = performance.now() / 1000;
-  const dt = cameraTime < 0 ? 0 : Math.min(0.1, Math.max(0, now - cameraTime));
+  const now = cameraNow();
+  const dt = cameraTime < 0 ? 0 : now - cameraTime;
   cameraTime = now;
   if (controls === null || !renderer.drawnPosition(handles.ball, followBall)) return;
   // A press aiming a swing, or the ball in the hand: the camera stops, so what is pressed stays put.
@@ -1901,6 +1963,146 @@ function arrowFits(x0: number, z0: number, ux: number, uz: number, shift: number
   }
   return true;
 }
+// ---- The swing drawn in 3D: where the ball will go and where it will hit -----------------------------
+
+// While a swing is aimed (a press or drag on a target, an armed target, or a drag let go until the
+// ball's run begins): the ball's path as a pendulum from where the line draws it back, at the height
+// it will swing at (./scene swingGoal, swingPath), a bright dashed tube in a dark edge drawn over
+// everything (a structure or the mast in front would hide it); a faint ghost ball in a pale ring
+// where the swing starts (green once the held ball is there); a red ghost ball with a ring facing
+// the camera where the ball first meets a piece, and a thin line from it down to the ground. The arrow on the ground stays as its shadow. The ball's place
+// on the screen at the hit, not only across the ground, reads at once (strangers could not tell
+// where a swing drawn on the ground would go).
+/** Dashes of the drawn path (every other of the swing's samples is a gap). */
+const PATH_DASHES = 24;
+/** Radius, m, of the path's fill and of its dark edge (thicker on an upright phone, see CUE_SCALE). */
+const PATH_RADIUS = 0.1 * CUE_SCALE,
+  PATH_EDGE = 0.17 * CUE_SCALE;
+const pathFillMaterial = new MeshBasicMaterial({ color: 0xffe08a, depthTest: false, depthWrite: false, transparent: true });
+const pathEdgeMaterial = new MeshBasicMaterial({ color: 0x14100a, depthTest: false, depthWrite: false, transparent: true, opacity: 0.8 });
+const pathFill = new InstancedMesh(chainGeometry, pathFillMaterial, PATH_DASHES);
+const pathEdge = new InstancedMesh(chainGeometry, pathEdgeMaterial, PATH_DASHES);
+pathEdge.renderOrder = 12;
+pathFill.renderOrder = 13;
+pathFill.frustumCulled = pathEdge.frustumCulled = false;
+const startGhost = new Mesh(
+  ballGeometry,
+  new MeshBasicMaterial({ color: 0xfff6dc, transparent: true, opacity: 0.45, depthWrite: false, depthTest: false }),
+);
+startGhost.scale.setScalar(BALL_RADIUS);
+startGhost.renderOrder = 12;
+const hitGhost = new Mesh(
+  ballGeometry,
+  new MeshBasicMaterial({ color: 0xff4a3a, transparent: true, opacity: 0.45, depthWrite: false, depthTest: false }),
+);
+hitGhost.scale.setScalar(BALL_RADIUS);
+hitGhost.renderOrder = 12;
+/** The ring round the ghost ball at the hit, facing the camera: red in a dark edge. */
+const hitRing = new Mesh(
+  new RingGeometry(1.05, 1.3, 40),
+  new MeshBasicMaterial({ color: 0xff3b2b, depthTest: false, depthWrite: false, transparent: true, side: DoubleSide }),
+);
+const hitRingEdge = new Mesh(
+  new RingGeometry(0.95, 1.4, 40),
+  new MeshBasicMaterial({ color: 0x14100a, depthTest: false, depthWrite: false, transparent: true, opacity: 0.8, side: DoubleSide }),
+);
+hitRingEdge.renderOrder = 13;
+hitRing.renderOrder = 14;
+hitRing.add(hitRingEdge);
+hitRingEdge.position.z = -0.01;
+/** A pale ring round the ghost ball where the swing starts, facing the camera, in a dark edge. */
+const startRing = new Mesh(
+  new RingGeometry(0.95, 1.12, 40),
+  new MeshBasicMaterial({ color: 0xfff6dc, depthTest: false, depthWrite: false, transparent: true, opacity: 0.9, side: DoubleSide }),
+);
+const startRingEdge = new Mesh(
+  new RingGeometry(0.88, 1.2, 40),
+  new MeshBasicMaterial({ color: 0x14100a, depthTest: false, depthWrite: false, transparent: true, opacity: 0.6, side: DoubleSide }),
+);
+startRingEdge.renderOrder = 12;
+startRing.renderOrder = 13;
+startRing.add(startRingEdge);
+startRingEdge.position.z = -0.01;
+const hitDrop = new Mesh(chainGeometry, new MeshBasicMaterial({ color: 0xff3b2b, transparent: true, opacity: 0.7, depthWrite: false }));
+const swingPreview = new Group();
+swingPreview.add(pathEdge, pathFill, startGhost, startRing, hitGhost, hitRing, hitDrop);
+swingPreview.visible = false;
+app.scene.add(swingPreview);
+/** The previewed swing's samples (./scene swingPath: the ball's centre, x y z in turn, m) and the piece it meets first (0: none). */
+const preview = { path: [] as number[], meet: 0, ready: false };
+/** How near, m, the held ball's centre must be to the previewed swing's start for its ring to show it ready (./scene READY_NEAR). */
+const READY_SHOWN = 0.4;
+const dashMatrix = new Matrix4();
+const dashFrom = new Vector3(),
+  dashTo = new Vector3(),
+  dashMid = new Vector3(),
+  dashQuat = new Quaternion(),
+  dashScale = new Vector3();
+const yAxis = new Vector3(0, 1, 0);
+/** The swing to preview now (its goal as ./scene swingGoal gives it), or null: see above. */
+function previewGoal(): ReturnType<typeof swingGoal> | null {
+  const piece = aiming.piece || aiming.armed || next.piece;
+  if (piece !== 0 && isAlive(shell.world, piece) && drag.body === 0) return swingGoal(shell.world, handles, piece, request());
+  const pull = handles.controls.pull;
+  if (pull?.letGo && pull.offset > 0) return pull;
+  return null;
+}
+/** Places the swing's 3D preview (see above), or hides it. */
+function drawSwingPreview(): void {
+  const goal = previewGoal();
+  swingPreview.visible = goal !== null;
+  if (goal === null) {
+    preview.meet = 0;
+    preview.ready = false;
+    preview.path.length = 0;
+    return;
+  }
+  const down = Math.sqrt(Math.max(0, HANG * HANG - goal.offset * goal.offset));
+  const start = [goal.x - goal.offset * goal.ux, goal.height - down, goal.z - goal.offset * goal.uz];
+  const path = preview.path;
+  preview.meet = swingPath(shell.world, handles.pieces, start, [goal.x, goal.height, goal.z], path);
+  const n = path.length / 3;
+  startGhost.position.set(start[0]!, start[1]!, start[2]!);
+  // Green once the held ball is there: let go now and it swings at once (before, it is still on its
+  // way and the swing waits for it).
+  preview.ready =
+    handles.controls.pull !== null && Math.hypot(ballAt[0]! - start[0]!, ballAt[1]! - start[1]!, ballAt[2]! - start[2]!) < READY_SHOWN;
+  (startRing.material as MeshBasicMaterial).color.setHex(preview.ready ? 0x6dff7a : 0xfff6dc);
+  startRing.position.copy(startGhost.position);
+  startRing.quaternion.copy(app.camera.quaternion);
+  startRing.scale.setScalar(BALL_RADIUS);
+  // The dashes: from sample 2k to 2k + 1, drawn from the start toward the hit.
+  let shown = 0;
+  for (let k = 0; k < PATH_DASHES && 2 * k + 1 < n; k++) {
+    dashFrom.fromArray(path, 6 * k);
+    dashTo.fromArray(path, 6 * k + 3);
+    dashMid.addVectors(dashFrom, dashTo).multiplyScalar(0.5);
+    dashTo.sub(dashFrom);
+    const len = dashTo.length();
+    if (len < 1e-6) continue;
+    dashQuat.setFromUnitVectors(yAxis, dashTo.divideScalar(len));
+    pathFill.setMatrixAt(shown, dashMatrix.compose(dashMid, dashQuat, dashScale.set(PATH_RADIUS, len, PATH_RADIUS)));
+    pathEdge.setMatrixAt(shown, dashMatrix.compose(dashMid, dashQuat, dashScale.set(PATH_EDGE, len + PATH_EDGE - PATH_RADIUS, PATH_EDGE)));
+    shown++;
+  }
+  pathFill.count = pathEdge.count = shown;
+  pathFill.instanceMatrix.needsUpdate = pathEdge.instanceMatrix.needsUpdate = true;
+  pathFillMaterial.color.setHSL(0.13 * (1 - aiming.power), 1, 0.6);
+  const hit = preview.meet !== 0;
+  hitGhost.visible = hitRing.visible = hitDrop.visible = hit;
+  if (!hit) return;
+  const hx = path[path.length - 3]!,
+    hy = path[path.length - 2]!,
+    hz = path[path.length - 1]!;
+  hitGhost.position.set(hx, hy, hz);
+  hitRing.position.set(hx, hy, hz);
+  hitRing.quaternion.copy(app.camera.quaternion);
+  // Pulsing a little, so the eye finds it.
+  hitRing.scale.setScalar(BALL_RADIUS * Math.sqrt(CUE_SCALE) * (1 + 0.08 * Math.sin(shell.world.time * 8)));
+  const drop = Math.max(0.01, hy - BALL_RADIUS);
+  hitDrop.position.set(hx, drop / 2, hz);
+  hitDrop.scale.set(0.03 * CUE_SCALE, drop, 0.03 * CUE_SCALE);
+}
 /** Cosine of the largest angle between the ball's travel and the camera's line of sight (across the ground) that counts as glancing. */
 const GLANCING_COS = Math.cos((40 * Math.PI) / 180);
 const lookDir = new Vector3();
@@ -2047,6 +2249,11 @@ function outOfSwings(): boolean {
 function pieceName(piece: number): string {
   const kind = handles.pieces.find((p) => p.body === piece)?.kind;
   return kind === 'planks' ? 'the plank stack' : `the ${kind ?? 'block'}`;
+}
+/** Whether pieces `a` and `b` (bodies) stand in one structure (./scene structureOf). */
+function sameStructure(a: number, b: number): boolean {
+  const pa = handles.pieces.find((p) => p.body === a);
+  return pa !== undefined && structureOf(handles.pieces, pa).some((q) => q.body === b);
 }
 /** Whether the ball is on its run at a target now (the swing can no longer be re-aimed). */
 function onRun(): boolean {
@@ -2640,8 +2847,14 @@ function hintText(): string {
     return `Glancing: the ball runs away from you and hits few blocks. Aim across the screen (${pullWords()})`;
   if (aiming.piece !== 0 && aiming.dragged && handles.controls.moves.length > 0 && aimed !== 0)
     return `Winding up… let go to re-aim this swing (no swing used): ${pullWords()}`;
-  if (aiming.piece !== 0 && aiming.dragged)
-    return `Let go to swing along the arrow: ${pullWords()}${aiming.power >= FULL_POWER_SHOWN ? '' : ', pull longer for more'}`;
+  if (aiming.piece !== 0 && aiming.dragged) {
+    // What the swing drawn in 3D shows (drawSwingPreview): a miss, or another structure in the way,
+    // said before the swing is used.
+    if (preview.meet === 0) return `The ball would miss: its dashes reach no block. Pull another way (${pullWords()})`;
+    if (!sameStructure(preview.meet, aiming.piece))
+      return `The ball meets ${pieceName(preview.meet)} first (red ring): let go to hit it, or pull another way`;
+    return `Let go: the ball swings along the dashes into the red ring: ${pullWords()}${aiming.power >= FULL_POWER_SHOWN ? '' : ', pull longer for more'}`;
+  }
   if (shell.world.time < notice.until) return notice.text;
   // Settling: the count goes on as the wreckage comes down; the end card waits for it.
   if (reachedAt >= 0)
@@ -2757,7 +2970,10 @@ function frame(): void {
   const hp = renderer.drawnPosition(handles.trolley, hookAt) ?? hookPosition(c);
   drawChain(hp);
   drawTagline();
-  if (renderer.drawnPosition(handles.ball, ballAt)) placeCues(ballAt, hp);
+  if (renderer.drawnPosition(handles.ball, ballAt)) {
+    placeCues(ballAt, hp);
+    outlineBehindMast(ballAt);
+  }
   followAction();
   cablePositions[0] = hp[0]!;
   cablePositions[1] = JIB_HEIGHT;
@@ -2776,6 +2992,7 @@ function frame(): void {
   aimArrow.visible = swinging;
   if (!swinging && lit !== 0 && lit !== aiming.armed) light(0);
   drawAim();
+  drawSwingPreview();
   if (goal !== null) goalMarker.position.set(goal[0], 0.02, goal[1]);
   else if (swinging) {
     const P = shell.world.components.Position;
@@ -2942,6 +3159,19 @@ shell.expose({
     }
     return { x, y };
   },
+  /**
+   * The swing drawn in 3D (see drawSwingPreview): whether it shows, the piece its path meets first
+   * (0: none), the ball's centre where it meets it (the red ghost ball; null when it meets none),
+   * where the swing starts (the pale ghost ball), m, and whether the held ball is there.
+   */
+  swingPreview: () => ({
+    shown: swingPreview.visible,
+    meet: preview.meet,
+    hit: swingPreview.visible && hitGhost.visible ? hitGhost.position.toArray() : null,
+    start: swingPreview.visible ? startGhost.position.toArray() : null,
+    /** Whether the held ball is at the start (its ring drawn green): let go now and it swings at once. */
+    ready: preview.ready,
+  }),
   /** The piece the running swing is aimed at (0 when none), and whether its arrow shows. */
   aimed: (): { piece: number; arrow: boolean } => ({ piece: aimed, arrow: aimArrow.visible }),
   /**
@@ -2979,6 +3209,8 @@ shell.expose({
   nextLevel,
   /** The drawing quality now ('full' or 'lite'; see Quality). */
   quality: (): Quality => params.quality,
+  /** Whether the ball's outline is drawn over the mast (while the mast stands between the camera and the ball). */
+  ballOutlined: (): boolean => ballOutline.visible,
   /** Whether the mast stands between the camera and the ball now (see mastBetween). */
   mastHidesBall: (): boolean => {
     const P = shell.world.components.Position,

@@ -1263,20 +1263,12 @@ const READY_STILL = 1;
  * moves or goal.
  */
 export function pullBack(world: PhysicsWorld, h: WreckingBallHandles, piece: number, request: SwingRequest): void {
-  const P = world.components.Position;
-  const { structure, tx, tz } = strikeSpot(world, h, piece);
-  const ballY = Math.max(BALL_RADIUS + 0.05, P.y[piece]!);
-  const height = Math.min(HOOK_RANGE[1], Math.max(HOOK_RANGE[0], ballY + HANG));
-  const r0 = Math.min(RADIUS_RANGE[1], Math.max(RADIUS_RANGE[0], Math.hypot(tx, tz)));
-  const a0 = Math.atan2(-tz, tx);
-  const x = r0 * Math.cos(a0),
-    z = -r0 * Math.sin(a0);
-  const ux = Math.cos(request.direction),
-    uz = Math.sin(request.direction);
-  const cos = Math.max(0.2, 1 - (request.speed * request.speed) / (2 * 9.81 * HANG));
-  let offset = HANG * Math.sqrt(1 - cos * cos);
-  // Shortened till the segment from the hook to the ball keeps MAST_CLEAR from the mast's axis.
-  while (offset > 0.3 && segmentToAxis(x, z, x - offset * ux, z - offset * uz) < MAST_CLEAR) offset -= 0.1;
+  const {
+    goal: { x, z, height, ux, uz, offset },
+    structure,
+    tx,
+    tz,
+  } = swingSetup(world, h, piece, request);
   const d = Math.round(((request.direction / (2 * Math.PI)) * APPROACH_DIRECTIONS + APPROACH_DIRECTIONS) % APPROACH_DIRECTIONS);
   const [followX, followZ] = followEnd(world, structure, x, z, tx, tz, d);
   const old = h.controls.pull;
@@ -1733,17 +1725,35 @@ export const SWING_REACH = 0.75;
  * @returns its body, or 0 when the swing meets none.
  */
 export function pieceOnSwing(world: PhysicsWorld, pieces: readonly Piece[], ball: ArrayLike<number>, hook: ArrayLike<number>): number {
+  return swingPath(world, pieces, ball, hook);
+}
+
+/**
+ * The swing of `pieceOnSwing` traced: fills `path` (when given) with the ball centre's places along
+ * it, x, y, z in turn (m; SWING_SAMPLES + 1 at most), from where it is let go to where it first
+ * meets a standing piece (that place the last), or to SWING_REACH past the hook when it meets none.
+ * @returns the piece met first, or 0.
+ */
+export function swingPath(
+  world: PhysicsWorld,
+  pieces: readonly Piece[],
+  ball: ArrayLike<number>,
+  hook: ArrayLike<number>,
+  path?: number[],
+): number {
   const P = world.components.Position;
   const hx = hook[0]!,
     hy = hook[1]!,
     hz = hook[2]!;
   const ex = ball[0]! - hx,
     ez = ball[2]! - hz;
+  if (path) path.length = 0;
   for (let k = 0; k <= SWING_SAMPLES; k++) {
     const f = 1 - ((1 + SWING_REACH) * k) / SWING_SAMPLES;
     const x = hx + f * ex,
       z = hz + f * ez;
     const y = hy - Math.sqrt(Math.max(0, HANG * HANG - f * f * (ex * ex + ez * ez)));
+    path?.push(x, y, z);
     for (const p of pieces) {
       if (p.fallen || !isAlive(world, p.body)) continue;
       // The ball's centre in the box's frame (its x axis (cos yaw, -sin yaw) across the ground, z (sin yaw, cos yaw)).
@@ -1763,6 +1773,40 @@ export function pieceOnSwing(world: PhysicsWorld, pieces: readonly Piece[], ball
     }
   }
   return 0;
+}
+
+/**
+ * The swing a drag at `piece` asks for, as `pullBack` sets it up: the hook's place over the strike
+ * point (x, height, z, m), the ball's travel (ux, uz) and how far back from under the hook the line
+ * draws it (offset, m). With `swingPath` from the drawn-back ball, the page draws where the ball
+ * will go before the crane has carried it there.
+ */
+export function swingGoal(
+  world: PhysicsWorld,
+  h: WreckingBallHandles,
+  piece: number,
+  request: SwingRequest,
+): { x: number; z: number; height: number; ux: number; uz: number; offset: number } {
+  return swingSetup(world, h, piece, request).goal;
+}
+
+/** `swingGoal`, with the strike spot's structure and place (tx, tz, m) for the follow-through. */
+function swingSetup(world: PhysicsWorld, h: WreckingBallHandles, piece: number, request: SwingRequest) {
+  const P = world.components.Position;
+  const { structure, tx, tz } = strikeSpot(world, h, piece);
+  const ballY = Math.max(BALL_RADIUS + 0.05, P.y[piece]!);
+  const height = Math.min(HOOK_RANGE[1], Math.max(HOOK_RANGE[0], ballY + HANG));
+  const r0 = Math.min(RADIUS_RANGE[1], Math.max(RADIUS_RANGE[0], Math.hypot(tx, tz)));
+  const a0 = Math.atan2(-tz, tx);
+  const x = r0 * Math.cos(a0),
+    z = -r0 * Math.sin(a0);
+  const ux = Math.cos(request.direction),
+    uz = Math.sin(request.direction);
+  const cos = Math.max(0.2, 1 - (request.speed * request.speed) / (2 * 9.81 * HANG));
+  let offset = HANG * Math.sqrt(1 - cos * cos);
+  // Shortened till the segment from the hook to the ball keeps MAST_CLEAR from the mast's axis.
+  while (offset > 0.3 && segmentToAxis(x, z, x - offset * ux, z - offset * uz) < MAST_CLEAR) offset -= 0.1;
+  return { goal: { x, z, height, ux, uz, offset }, structure, tx, tz };
 }
 
 /** How many pieces have fallen. */

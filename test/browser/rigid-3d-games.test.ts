@@ -721,6 +721,7 @@ describe('3D rigid-body games in headless Chromium', () => {
         paused: boolean;
         mastHidesBall(): boolean;
         mastSolid(): boolean;
+        ballOutlined(): boolean;
         handles(): { crane: { angle: number; radius: number } };
         app: { camera: { position: { x: number; z: number } } };
       };
@@ -737,9 +738,15 @@ describe('3D rigid-body games in headless Chromium', () => {
       await turn(0);
       await g.waitFor(() => (window.game as unknown as W).mastHidesBall(), null, 30_000);
       expect(await g.page.evaluate(() => (window.game as unknown as W).mastSolid())).toBe(true);
+      // Behind the mast, the ball's outline is drawn over it (before: the ball was lost behind the
+      // bars, and a stranger read it as drawn wrongly); clear of the mast, no outline.
+      await g.frames(1);
+      expect(await g.page.evaluate(() => (window.game as unknown as W).ballOutlined())).toBe(true);
       await turn(Math.PI / 2);
       await g.waitFor(() => !(window.game as unknown as W).mastHidesBall(), null, 30_000);
       expect(await g.page.evaluate(() => (window.game as unknown as W).mastSolid())).toBe(true);
+      await g.frames(1);
+      expect(await g.page.evaluate(() => (window.game as unknown as W).ballOutlined())).toBe(false);
       expect(g.errors).toEqual([]);
     });
   });

@@ -31,7 +31,11 @@ describe('wrecking ball: the camera holds still between swings', () => {
       query: { level: 1, shadows: 0 },
       readyTimeoutMs: 60_000,
     });
-    await g.page.waitForTimeout(1500);
+    // Game time is run in the page's own frames (GamePage.runFrames / runUntil), 3 steps a frame
+    // (1/20 s): nothing waits on the clock. The camera's spring runs on page time, which goes by as
+    // the frames are drawn (a few s over each settling: the spring closes in under 1 s).
+    const RUN = { seconds: 1 / 20 };
+    await g.runFrames(30, RUN);
     /** The page px of each structure's first piece's starting spot (a fixed point of the world: only the camera moves it). */
     const spots = () =>
       g.page.evaluate(() => {
@@ -65,10 +69,11 @@ describe('wrecking ball: the camera holds still between swings', () => {
         },
         [kind, dx, dy] as const,
       );
+    /** Runs the game until swing `used` has begun and its run is over, then 6 s more (the wreckage settling). */
     const settled = async (used: number) => {
-      await g.waitFor((n) => (window.game as unknown as WB).swings().used >= n, used, 30_000);
-      await g.waitFor(() => (window.game as unknown as WB).handles().controls.moves.length === 0, null, 60_000);
-      await g.page.waitForTimeout(6000);
+      await g.runUntil((n) => (window.game as unknown as WB).swings().used >= n, used, { ...RUN, maxFrames: 600 });
+      await g.runUntil(() => (window.game as unknown as WB).handles().controls.moves.length === 0, null, { ...RUN, maxFrames: 1200 });
+      await g.runFrames(120, RUN);
     };
     const before = await spots();
     expect(Object.keys(before)).toEqual(expect.arrayContaining(['planks', 'wall']));
@@ -100,7 +105,7 @@ describe('wrecking ball: the camera holds still between swings', () => {
       query: { level: 1, shadows: 0 },
       readyTimeoutMs: 60_000,
     });
-    await g.page.waitForTimeout(1000);
+    await g.runFrames(20, { seconds: 1 / 20 });
     const distance = () =>
       g.page.evaluate(() => {
         const game = window.game as unknown as {
@@ -121,11 +126,10 @@ describe('wrecking ball: the camera holds still between swings', () => {
       await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: at(0) });
       for (let k = 1; k <= 10; k++) {
         await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: at(k) });
-        await g.page.waitForTimeout(16);
       }
       await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
       await cdp.detach();
-      await g.page.waitForTimeout(300);
+      await g.runFrames(2);
     };
     const d0 = await distance();
     await pinch(100, 220);
@@ -142,9 +146,12 @@ describe('wrecking ball: the camera holds still between swings', () => {
     const near = await distance();
     expect(near / d0).toBeGreaterThanOrEqual(0.599);
     await g.page.locator('[data-hud="reset-view"]').click();
-    await g.page.waitForTimeout(300);
+    await g.runFrames(2);
     expect(Math.abs((await distance()) / d0 - 1)).toBeLessThan(0.02);
-    // More than 6 s into the level with no swing: the phone's intro has shrunk to one line.
+    // More than 6 s into the level with no swing (run on in the page's frames, 1/10 s each, and a few
+    // more for the hint, redrawn every 6th frame): the phone's intro has shrunk to one line.
+    await g.runUntil(() => (window.game as unknown as { world: { time: number } }).world.time > 6.5, null, { seconds: 1 / 10 });
+    await g.runFrames(6);
     expect(await g.page.evaluate(() => (window.game as unknown as { world: { time: number } }).world.time)).toBeGreaterThan(6.5);
     expect(await g.page.locator('[data-hud="tap-hint"]').textContent()).toBe('Drag back from a block and let go');
     expect(g.errors).toEqual([]);

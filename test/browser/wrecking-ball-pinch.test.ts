@@ -95,7 +95,7 @@ describe('wrecking ball on a phone: a pinch, a glancing pull', () => {
     expect(await hintWhilePulling(0, 100)).toMatch(/^Glancing/);
     // To the left: the ball runs across the screen.
     const across = await hintWhilePulling(-90, 0);
-    expect(across).toMatch(/^Let go to swing along the arrow/);
+    expect(across).toMatch(/^Let go: the ball swings along the dashes into the red ring/);
     expect(await g.page.evaluate(() => (window.game as unknown as WB).swings().used)).toBe(0);
     expect(g.errors).toEqual([]);
     await g.close();

@@ -2,7 +2,8 @@
  * Wrecking ball as a stranger plays it (issue 34): on a phone every target on the screen can be given
  * a full-power swing by a drag toward the screen's nearest edge (games/wrecking-ball/main.ts,
  * fullPull and the phone's narrower FRAME_X), and a piece knocked off the screen is brought back
- * into view (lostPiece: the framing widens to it).
+ * into view (lostPiece: the framing widens to it); at the start the ball hangs clear of the mast on a
+ * desktop screen (ballByMast).
  */
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { Harness, START_TIMEOUT_MS } from './harness';
@@ -19,12 +20,12 @@ interface WB {
       Velocity: { x: Float64Array; y: Float64Array; z: Float64Array };
     };
   };
-  handles(): { pieces: { body: number; fallen: boolean; half: number[] }[] };
+  handles(): { ball: number; pieces: { body: number; fallen: boolean; half: number[] }[] };
   pressAt(x: number, y: number): string;
   aimDrag(x: number, y: number): void;
   aim(): { power: number };
   paused: boolean;
-  app: { camera: { position: V3 & { clone(): { set(x: number, y: number, z: number): { project(c: unknown): V3 } } } } };
+  app: { camera: { fov: number; position: V3 & { clone(): { set(x: number, y: number, z: number): { project(c: unknown): V3 } } } } };
 }
 
 describe('wrecking ball: a stranger can swing at every target and sees the wreckage', () => {
@@ -92,6 +93,29 @@ describe('wrecking ball: a stranger can swing at every target and sees the wreck
       readyTimeoutMs: 60_000,
     });
     await g.runFrames(30);
+    // The ball hangs clear of the mast on the screen at the start (games/wrecking-ball/main.ts,
+    // ballByMast): px between the ball's outline and the mast's (its 0.41 m half width at the ball's
+    // height), each drawn radius its size over its distance from the camera times the focal length.
+    const gap = await g.page.evaluate(() => {
+      const game = window.game as unknown as WB;
+      const P = game.world.components.Position;
+      const b = game.handles().ball;
+      const cam = game.app.camera;
+      const project = (x: number, y: number, z: number) => cam.position.clone().set(x, y, z).project(cam);
+      const h = document.querySelector('canvas')!.clientHeight;
+      const focal = h / 2 / Math.tan((cam.fov * Math.PI) / 360);
+      const c = cam.position;
+      const ball = project(P.x[b]!, P.y[b]!, P.z[b]!),
+        mast = project(0, P.y[b]!, 0);
+      const toBall = Math.hypot(P.x[b]! - c.x, P.y[b]! - c.y, P.z[b]! - c.z),
+        toMast = Math.hypot(c.x, c.y - P.y[b]!, c.z);
+      return (
+        (Math.abs(ball.x - mast.x) * document.querySelector('canvas')!.clientWidth) / 2 - (0.55 * focal) / toBall - (0.41 * focal) / toMast
+      );
+    });
+    console.log(`level 1 at the start: ${gap.toFixed(0)} px between the ball's outline and the mast's`);
+    // Before: -15 px (the ball drawn over the mast's foot). Bound: apart (> 0 px).
+    expect(gap).toBeGreaterThan(0);
     /** Where the piece is drawn (NDC), after it was put `r` m out from the mast, off the screen. */
     const put = await g.page.evaluate(() => {
       const game = window.game as unknown as WB;

@@ -12,6 +12,7 @@ interface WB {
   pressAt(x: number, y: number): string;
   releaseAt(x: number, y: number): string;
   aimExtent(): { x: number; y: number } | null;
+  swingPreview(): { shown: boolean; meet: number; hit: number[] | null; start: number[] | null };
   jibSolid(): boolean;
   jibShows(): boolean;
   paused: boolean;
@@ -56,19 +57,49 @@ describe('wrecking ball: the aim arrow and the jib keep out of the way', () => {
         .map((s) => [s.x, s.y] as const);
     });
     const worst: number[] = [];
+    const previews: { shown: boolean; px: number; rise: number }[] = [];
     for (const [x, y] of spots) {
       const tapped = await g.page.evaluate(
         ([x, y]) => {
           const game = window.game as unknown as WB;
-          return game.pressAt(x, y) === 'aim' && game.releaseAt(x, y) !== 'none';
+          return game.pressAt(x, y) === 'aim' ? game.releaseAt(x, y) : 'none';
         },
         [x, y] as const,
       );
-      if (!tapped) continue;
+      if (tapped === 'none') continue;
       await g.frames(1);
-      const e = await g.page.evaluate(() => (window.game as unknown as WB).aimExtent());
+      // The arrow's extent, and the swing drawn in 3D: where the ball meets the piece tapped, on the
+      // screen and in height (one evaluate for both).
+      const { e, p } = await g.page.evaluate(
+        ([x, y]) => {
+          const game = window.game as unknown as WB;
+          const e = game.aimExtent();
+          const s = game.swingPreview();
+          if (!s.hit) return { e, p: { shown: s.shown, px: Number.POSITIVE_INFINITY, rise: Number.POSITIVE_INFINITY } };
+          const at = game.app.camera.position.clone().set(s.hit[0]!, s.hit[1]!, s.hit[2]!).project(game.app.camera);
+          return {
+            e,
+            p: { shown: s.shown, px: Math.hypot(((at.x - x) * innerWidth) / 2, ((at.y - y) * innerHeight) / 2), rise: s.hit[1]! },
+          };
+        },
+        [x, y] as const,
+      );
       if (e) worst.push(Math.max(e.x, e.y));
+      // (A second tap on the piece already armed swings: the swing's own marks show then.)
+      if (tapped === 'armed') previews.push(p);
     }
+    const near = previews.filter((p) => p.px < 60).length;
+    console.log(
+      `swing preview: ${previews.filter((p) => p.shown).length}/${previews.length} taps show it; hit marker within 60 px of the piece tapped in ${near}; lowest marker ${Math.min(...previews.map((p) => p.rise)).toFixed(2)} m up`,
+    );
+    // Before: no swing was drawn but the arrow on the ground. Every tap shows the swing; its hit
+    // marker (the ball's centre where it first meets a piece) within 60 px of the piece tapped (a
+    // tower's 0.7 m block is about 25 px on this screen; the ball meets a plank stack's near side or
+    // the block next to the one tapped) for at least 4 taps in 5, and never drawn on the ground
+    // (the ball's centre at least its radius, 0.55 m, up).
+    expect(previews.every((p) => p.shown)).toBe(true);
+    expect(near).toBeGreaterThanOrEqual(Math.ceil(0.8 * previews.length));
+    expect(Math.min(...previews.map((p) => p.rise))).toBeGreaterThan(0.5);
     // Before: 6 of level 2's 28 taps drew the arrow partly off the screen (its head up to 19 % of
     // the half width past the edge, ahead of a tower near the right edge). Every corner of the
     // arrow's dark edge within the screen (|NDC| <= 1; drawn within 0.94).
