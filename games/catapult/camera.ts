@@ -105,11 +105,14 @@ export const UPRIGHT_GROUND = 0.28;
 
 /**
  * The same where the aim view is close on the catapult and the castle's inset shows in the earth
- * while aiming (`aimCloseUp`): the inset fills the earth, so more earth draws it larger, and the sky
- * over the ground (62 % of the screen: 12 m at AIM_PX_PER_M on a 390 x 844 phone) still holds a
- * strong throw's arc.
+ * while aiming (`aimCloseUp`): the screen's middle. The inset fills the earth, so more earth draws a
+ * tall castle's inset larger (a 390 x 844 phone's 788 px canvas has 394 px of earth under the
+ * ground: levels 4 to 8's insets 202 to 261 px tall, 166 px at 0.38), and the sky over the ground
+ * (8 to 11 m at 48 to 36 px a metre) holds a throw at the castle across the whole aim view. At 0.38
+ * the catapult sat under 62 % of mostly empty sky; a throw that rises higher is followed by a view
+ * that rises with it.
  */
-export const UPRIGHT_GROUND_CLOSE = 0.38;
+export const UPRIGHT_GROUND_CLOSE = 0.5;
 
 /** Where the lowest surface sits on an upright screen for field `f`: UPRIGHT_GROUND_CLOSE where the close-up shows (`aimCloseUp`), else UPRIGHT_GROUND. */
 export function uprightGround(f: Field, width: number, height: number): number {

@@ -132,7 +132,7 @@ import {
 } from './course';
 import { createCrash } from './crash';
 import { clockText, courseName, finishCard, LAST_SEED, nextSeed } from './finish';
-import { labelClearOf, type ScreenBox } from './label-place';
+import { clearOfBox, labelClearOf, type ScreenBox } from './label-place';
 import { FRAME_CAP, STEPS_PER_FRAME, slowMotion } from './pacing';
 import { nearFade } from './ring-fade';
 import { offScreenLabel } from './ring-pointer';
@@ -1397,8 +1397,8 @@ function pointToNextRing(): void {
       Math.hypot(Math.max(Math.abs(px - x) - bw, 0), Math.max(Math.abs(py - y) - bh, 0)) < rPx + 2;
     const coversMarker = ([px, py]: [number, number]) =>
       marker.style.display !== 'none' &&
-      Math.abs(px - pathAim.x) <= halfW + MARKER_HALF[0] &&
-      Math.abs(py - pathAim.y) <= half + MARKER_HALF[1];
+      Math.abs(px - pathAim.x) <= halfW + MARKER_HALF[0] + MARKER_PAD &&
+      Math.abs(py - pathAim.y) <= half + MARKER_HALF[1] + MARKER_PAD;
     // Or the aircraft (its box on the screen in the chase view, `planeBox`): a label over the tail
     // hides the aircraft and reads as the aircraft's own.
     const [p0, q0, pw, ph] = planeBox;
@@ -1453,8 +1453,13 @@ function pointToNextRing(): void {
   }
   if (ringPointer.textContent !== ringAim.text) ringPointer.textContent = ringAim.text;
   [x, y] = keepInScene(x, y, w, bottom);
+  // Never under the marker, which is drawn over it (a label at the scene's edge, wide on a phone,
+  // reached over the marker in the middle; a ring's every place round it could): moved the least way
+  // clear of it, inside the scene and off the messages.
   const hw = ringPointer.offsetWidth / 2 + 4,
     hh = ringPointer.offsetHeight / 2 + 4;
+  if (marker.style.display !== 'none')
+    [x, y] = clearOfBox(x, y, hw - 4, hh - 4, markerDrawnBox(), LABEL_GAP, { w, h: bottom, margin: EDGE_MARGIN, avoid: shownBoxes() });
   ringPointer.style.left = `${x}px`;
   ringPointer.style.top = `${y}px`;
   ringAim.box = [x - hw + 4, y - hh + 4, 2 * hw - 8, 2 * hh - 8];
@@ -1490,6 +1495,17 @@ const EDGE_MARGIN = 10;
  * desktop, 1.35 on a phone, so that it is seen at a glance.
  */
 const MARKER_HALF: readonly [number, number] = compact ? [23, 13.5] : [25.5, 15];
+/**
+ * How far the marker's drawing reaches past its box, px: its black outline (5.5 units wide, round
+ * caps) past the wing tips and the tick on top (2.75 units: 4 px at its scale) and its drop shadow
+ * (3 px).
+ */
+const MARKER_PAD = 7;
+/** The flight-path marker's box as drawn (MARKER_HALF round its point and MARKER_PAD), px: left, top, width, height. */
+function markerDrawnBox(): ScreenBox {
+  const [hx, hy] = [MARKER_HALF[0] + MARKER_PAD, MARKER_HALF[1] + MARKER_PAD];
+  return [pathAim.x - hx, pathAim.y - hy, 2 * hx, 2 * hy];
+}
 /** Gap between the ring label and the ring it labels, px. */
 const LABEL_GAP = 6;
 /** The next ring's outer edge from its centre, m: the pulsing halo's (RING_RADIUS + 12, tube 2.5, pulse 6 %). */

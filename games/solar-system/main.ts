@@ -137,6 +137,7 @@ import {
   TARGET_TRACK,
 } from './missions';
 import { meetingPoint, orbitCrossings, orbitRadiusToward, orbitReach, pathDay } from './orbit-crossing';
+import { type TagBox, tagPlace } from './tag-place';
 import { heldWaitRate, NEAR_WINDOW_DAYS, nextLaunchWindow, WAIT_TAP_DAYS } from './wait-pace';
 
 /** Scene units per display AU. */
@@ -598,7 +599,7 @@ function launch(): void {
 }
 /**
  * The brief's line after a flight: what to do next (the way on, or the miss's fix), short. The header
- * keeps its aiming height (`holdStatusHeight`); with no line there, a phone showed a blank band.
+ * keeps its fixed height (STATUS_ROW); with no line there, a phone showed a blank band.
  */
 let doneNote = '';
 /** After the probe arrived, fell into the Sun or missed: stars, sound, the result and its buttons. */
@@ -1378,6 +1379,8 @@ labelLayer.append(tagMeasure);
 
 /** Least gap between a forecast tag and the view's edge, px. */
 const TAG_MARGIN = 6;
+/** Gap between a forecast tag stacked under or over the other and that tag, px. */
+const TAG_GAP = 2;
 /** The forecast tags shown this frame: left, top, right, bottom (px), four numbers each; the names keep clear of them (placeLabels). */
 const tagBoxes: number[] = [];
 /**
@@ -1385,8 +1388,12 @@ const tagBoxes: number[] = [];
  * centred `below` px under it (over it when negative) where that is clear, else over (under) it, to
  * its right or to its left, the first place that keeps clear of the other tag, the dots and the
  * names as last placed; each place moved inside the view, so on a phone no tag is cut off at an
- * edge or sits on other names. Hides it when `text` is ''. `frame`
- * clears `tagBoxes` before the tags are placed.
+ * edge or sits on other names. Where none is, the first of those places, or else a place stacked
+ * under or over the other tag, that keeps clear of the other tag (./tag-place.ts tagPlace; the
+ * names, placed after the tags, keep clear of both): the two tags never overlap (with the target
+ * and the probe meeting, zoomed on Jupiter, "probe on day 427" lay over "Jupiter on day 427").
+ * Hides it when `text` is '' or no place clears the other tag. `frame` clears `tagBoxes` before the
+ * tags are placed.
  */
 function placeTag(i: number, text: string, x: number, y: number, z: number, below: number): void {
   const shown = tagShown[i]!;
@@ -1403,27 +1410,22 @@ function placeTag(i: number, text: string, x: number, y: number, z: number, belo
   const tw = el.offsetWidth,
     th = el.offsetHeight || LABEL_HEIGHT;
   const off = Math.abs(below);
-  const places = [
+  const places: [number, number][] = [
     [sx - tw / 2, below >= 0 ? sy + off : sy - off],
     [sx - tw / 2, below >= 0 ? sy - off - th : sy + off - th],
     [sx + Math.max(8, off * 0.7), sy - th / 2],
     [sx - Math.max(8, off * 0.7) - tw, sy - th / 2],
   ];
-  let x0 = 0,
-    y0 = 0;
-  for (let k = 0; k < places.length; k++) {
-    // TAG_MARGIN px clear of the view's edges (an italic first letter 2 px from the edge looks cut).
-    const cx = Math.max(TAG_MARGIN, Math.min(w - tw - TAG_MARGIN, places[k]![0]!)),
-      cy = Math.max(TAG_MARGIN, Math.min(h - th - TAG_MARGIN, places[k]![1]!));
-    let clear = labelFree(cx, cy, cx + tw, cy + th, -1);
-    for (let b = 0; b < tagBoxes.length && clear; b += 4)
-      if (cx < tagBoxes[b + 2]! && cx + tw > tagBoxes[b]! && cy < tagBoxes[b + 3]! && cy + th > tagBoxes[b + 1]!) clear = false;
-    if (k === 0 || clear) [x0, y0] = [cx, cy];
-    if (clear) break;
+  const tags: TagBox[] = [];
+  for (let b = 0; b < tagBoxes.length; b += 4) tags.push([tagBoxes[b]!, tagBoxes[b + 1]!, tagBoxes[b + 2]!, tagBoxes[b + 3]!]);
+  // TAG_MARGIN px clear of the view's edges (an italic first letter 2 px from the edge looks cut).
+  const at = tagPlace(places, tw, th, sx, { w, h, margin: TAG_MARGIN }, tags, (x0, y0, x1, y1) => labelFree(x0, y0, x1, y1, -1), TAG_GAP);
+  if (!at) {
+    shown.text = '';
+    return;
   }
-  tagBoxes.push(x0, y0, x0 + tw, y0 + th);
-  shown.x = Math.round(x0);
-  shown.y = Math.round(y0);
+  [shown.x, shown.y] = at;
+  tagBoxes.push(shown.x, shown.y, shown.x + tw, shown.y + th);
 }
 
 /** Labels placed this frame: left, top, right, bottom (px), four numbers each. */
@@ -1927,10 +1929,25 @@ for (const type of ['pointerup', 'pointercancel'] as const)
 
 // ---- Status: the mission, the plan or the flight, the date; the on-screen buttons --------------------
 
+/**
+ * The header's (status's) one height, CSS: on a desktop (over 440 px wide) 6 + 4 px of padding and
+ * the goal's line (15 px type), the brief's (13 px), two lines for the plan (14 px), the date's (13
+ * px) and three lines for the hint (14 px, last); on a phone the goal (14 px), four 13 px lines for the brief or the
+ * hint in its place, three for the plan, and the date (12 px). Lines 1.4 x their type. The header
+ * kept its tallest height so far: it grew from 107 to 146 px on a desktop and from 116 to 174 px on
+ * a phone in the first two missions, and the map moved down each time.
+ */
+const STATUS_ROW = {
+  wide: `${10 + 1.4 * (15 + 13 + 5 * 14 + 13)}px`,
+  phone: `${10 + 1.4 * (14 + 7 * 13 + 12)}px`,
+} as const;
 const style = document.createElement('style');
 style.textContent = `
-/* Held at its tallest height (holdStatusHeight): a shorter phase's lines sit in the middle of it. */
-.ss-status { box-sizing: border-box; text-align: center; font: 13px/1.4 system-ui, sans-serif; color: #e8ecf1; padding: 6px 10px 4px; display: flex; flex-direction: column; justify-content: center; }
+/* The header's row has one fixed height (STATUS_ROW: each line's slot its lines tall, whatever it
+   says), so the map under it never moves; a text longer than its slot (a long hint on a phone) draws
+   the status on down over the map's top, on its own backing, rather than push the map down. */
+.ss-status-row { position: relative; z-index: 4; overflow: visible; height: ${STATUS_ROW.wide}; }
+.ss-status { position: absolute; left: 0; right: 0; top: 0; min-height: 100%; background: inherit; box-sizing: border-box; text-align: center; font: 13px/1.4 system-ui, sans-serif; color: #e8ecf1; padding: 6px 10px 4px; display: flex; flex-direction: column; justify-content: flex-start; }
 .ss-status .ss-goal { font-weight: 700; color: #ffe066; font-size: 14px; }
 .ss-status .ss-stars { color: #ffd166; letter-spacing: 1px; }
 .ss-status .ss-brief { color: #cfd8e6; font-size: 12px; min-height: 1.4em; }
@@ -1940,13 +1957,17 @@ style.textContent = `
 .ss-status .ss-line.won { color: #7ee787; font-weight: 700; }
 .ss-status .ss-date { color: #b8c4d6; font-size: 12px; }
 /* The hint's line is kept (empty) when the hint is off, so pressing Hint does not move the stage. */
-.ss-status .ss-hint { color: #9fd3ff; font-weight: 600; min-height: 1.4em; }
+.ss-status .ss-hint { color: #9fd3ff; font-weight: 600; min-height: 4.2em; }
+.ss-status .ss-line { min-height: 2.8em; }
 /* A desktop: 14 px lines at most 760 px long (a 1,000 px line at 13 px was hard to follow). */
 @media (min-width: 441px) {
   .ss-status { font-size: 14px; }
   .ss-status .ss-goal { font-size: 15px; }
   .ss-status .ss-brief, .ss-status .ss-date { font-size: 13px; }
   .ss-status > div { max-width: 760px; margin: 0 auto; }
+  /* The date under the plan, the hint's room (empty until asked for) last, at the header's foot. */
+  .ss-status .ss-date { order: 1; }
+  .ss-status .ss-hint { order: 2; }
 }
 .ss-pad button.ss-hint-button.ss-pulse { animation: ss-pulse 1.2s ease-in-out infinite; }
 .ss-arrival { position: absolute; z-index: 3; left: 0; right: 0; top: 4%; padding: 10px 0; text-align: center;
@@ -1970,18 +1991,20 @@ style.textContent = `
    44 x 44 px; a longer label ("+ fast", "Try again") breaks inside its button, not the row, so the
    buttons never wrap to a second row and move under the finger. */
 @media (max-width: 440px) {
-  /* The brief shows on a phone too, so the first mission's is seen, two lines kept. */
-  .ss-status .ss-brief { min-height: 2.8em; }
-  /* (A flight's or a result's one-line note keeps no second line.) */
-  .ss-status .ss-brief.ss-note { min-height: 0; }
+  .ss-status-row { height: ${STATUS_ROW.phone}; }
+  /* The brief shows on a phone too, so the first mission's is seen; it and the hint that takes its
+     place share one slot four 13 px lines tall (the longest hints), the plan's three. */
+  .ss-status .ss-brief, .ss-status .ss-hint { min-height: ${4 * 1.4 * 13}px; }
+  .ss-status .ss-line { min-height: ${3 * 1.4 * 13}px; }
   .bp-touchbar.ss-pad { display: grid; grid-auto-flow: column; grid-auto-columns: auto; justify-content: stretch; gap: 4px; }
   .bp-touchbar.ss-pad button { min-width: 44px; padding: 0 3px; font-size: 14px; white-space: normal; line-height: 1.05; }
   .bp-touchbar.ss-pad button.ss-go { min-width: 44px; }
-  .ss-status .ss-line { min-height: 2.8em; }
-  /* The hint takes the brief's two lines (not laid over the top of the map, on the planets): the
-     stage keeps its height while aiming. */
-  .ss-status .ss-hint { min-height: 2.8em; }
+  /* The hint takes the brief's slot, over the plan (not laid over the top of the map, on the
+     planets; after the plan, the plan's line moved up into the brief's place). */
   .ss-status .ss-hint:empty { display: none; }
+  .ss-status .ss-brief, .ss-status .ss-hint { order: 1; }
+  .ss-status .ss-line { order: 2; }
+  .ss-status .ss-date { order: 3; }
   .ss-status.ss-hinting .ss-brief { display: none !important; }
 }
 details.ss-table summary { cursor: pointer; color: #cfd8e6; }
@@ -2007,25 +2030,7 @@ dateText.className = 'ss-date';
 dateText.dataset.hud = 'date';
 status.append(goalLine, briefLine, planText, hintLine, dateText);
 pageLayout().status.append(status);
-
-/** The status's tallest height at this page width, px (0 until measured; a resize measures again). */
-let statusHeight = 0;
-/**
- * Keeps the status at the tallest it has been at this width: aiming, flying and arrived show
- * different lines, and a header that changed height moved the canvas (and the system) up and down
- * under the player's eyes. The first layout, aiming, is the tallest, so the header rarely grows.
- */
-function holdStatusHeight(): void {
-  const h = status.offsetHeight;
-  if (h <= statusHeight) return;
-  statusHeight = h;
-  status.style.minHeight = `${h}px`;
-}
-window.addEventListener('resize', () => {
-  statusHeight = 0;
-  status.style.minHeight = '';
-  holdStatusHeight();
-});
+pageLayout().status.classList.add('ss-status-row');
 
 const PAD = [
   { label: '↺', name: 'turn the launch left (←)', press: () => turn(-TURN_STEP) },
@@ -2433,15 +2438,11 @@ function updateStatus(force = false): void {
   shownStatus = key;
   goalLine.textContent = goal;
   briefLine.textContent = brief;
-  briefLine.classList.toggle('ss-note', phase !== 'aim');
-  // No brief (in flight with the fuel gone): the line goes (its kept height left a blank line under the goal).
-  briefLine.style.display = brief === '' ? 'none' : '';
   planText.textContent = line;
   planText.className = `ss-line ${cls}`;
   hintLine.textContent = shownHint;
   status.classList.toggle('ss-hinting', shownHint !== '');
   dateText.textContent = dateLine;
-  holdStatusHeight();
   const aimingNow = phase === 'aim';
   setPadLabels(phase === 'flight' ? 'burn' : 'aim');
   for (let i = 0; i < 4; i++) pad.show(i, phase !== 'done');

@@ -82,10 +82,16 @@ describe('projects', () => {
     );
     expect(numbers).not.toMatch(/press|tap|more speed/);
     expect(await g.page.locator('[data-hud="hint"]').textContent()).toBe('');
-    // The hint's line is kept while empty: showing the hint leaves the stage's height as it was (it
-    // grew the header by a line, and one frame drew the canvas black).
-    const stageHeight = () => g.page.evaluate(() => document.querySelector('canvas')!.clientHeight);
-    const heightBefore = await stageHeight();
+    // The header has one height (main.ts STATUS_ROW): the stage's top and height stay as they were
+    // through the hint (it grew the header by a line, and one frame drew the canvas black), a longer
+    // line and the flight (the header grew from 107 to 146 px over the first missions, each time
+    // moving the map down). To the pixel.
+    const stageBox = () =>
+      g.page.evaluate(() => {
+        const r = document.querySelector('canvas')!.getBoundingClientRect();
+        return [Math.round(r.top), Math.round(r.height)];
+      });
+    const boxBefore = await stageBox();
     // The hint says which way to change and what to watch, not how many presses (counting presses
     // to a green line was the whole game): a faster launch.
     await g.press('h');
@@ -94,7 +100,14 @@ describe('projects', () => {
       null,
     );
     expect(await g.page.locator('[data-hud="hint"]').textContent()).not.toMatch(/\d+ times|twice|once/);
-    expect(await stageHeight()).toBe(heightBefore);
+    expect(await stageBox()).toEqual(boxBefore);
+    // Nor does a longer plan or hint move it (mission 2's hint took five lines on a phone): the
+    // header's height does not follow its words. (Set here, and put back by the next update.)
+    await g.page.evaluate(() => {
+      for (const hud of ['plan', 'hint']) document.querySelector(`[data-hud="${hud}"]`)!.textContent = 'a longer line of words '.repeat(12);
+    });
+    await g.frames(1);
+    expect(await stageBox()).toEqual(boxBefore);
     // The legend lists the few controls a mission needs (with the kit's P, N, R): 16 lines were too
     // many to learn; the rest are named in the panel.
     expect(await g.page.locator('.bp-legend > div').count()).toBe(9);
@@ -117,6 +130,7 @@ describe('projects', () => {
     const judged = (await g.page.locator('[data-hud="plan"]').textContent()) ?? '';
     expect(judged).toMatch(/ → ✓ meets Mars on day \d+ · ★★★$/);
     expect(await g.page.locator('[data-hud="plan"]').getAttribute('class')).toBe('ss-line ok');
+    expect(await stageBox()).toEqual(boxBefore);
     await g.waitFor(
       () => /^Look where the dots end: .* press Space\.$/.test(document.querySelector('[data-hud="hint"]')?.textContent ?? ''),
       null,
@@ -182,7 +196,7 @@ describe('projects', () => {
       /^Day \d+ · \d\.\d\d AU to Mars · ✓ arrives on day \d+ · fuel 1\.00 km\/s$/,
     );
     // The header keeps its height in flight (one line fewer than aiming moved the canvas 17 px).
-    expect(await stageHeight()).toBe(heightBefore);
+    expect(await stageBox()).toEqual(boxBefore);
     // ↑ is a burn along the motion: the fuel goes down by 0.05 km/s and the forecast follows it.
     await g.press('p');
     await g.press('ArrowUp');

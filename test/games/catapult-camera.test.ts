@@ -120,6 +120,20 @@ describe('catapult camera', () => {
       // castle's view too (the ground stays put as the camera follows a throw).
       expect(onScreen(aim, 0, f.floor, 1, f.floor)[3]!, tag).toBeCloseTo((1 - UPRIGHT_GROUND_CLOSE) * H, 6);
       expect(onScreen(close, 0, f.floor, 1, f.floor)[3]!, tag).toBeCloseTo((1 - UPRIGHT_GROUND_CLOSE) * H, 6);
+      // The scene on the screen's middle line, not at the foot of a tall empty sky: the sky over the
+      // lowest surface at most half the screen (422 px; it was 523 px, 62 %, at 0.38 of the way up),
+      // and the earth under it at least 40 % (the castle's inset and the card saying how to play).
+      // Yet a 45 degree throw at the castle's middle stays under the banner (the view's top 70 px)
+      // across the whole aim view, its preview's dots on the screen.
+      const ground = onScreen(aim, 0, f.floor, 1, f.floor)[3]!;
+      expect(ground, tag).toBeLessThanOrEqual(0.5 * H + 1e-6);
+      expect(H - ground, tag).toBeGreaterThanOrEqual(0.4 * H);
+      const R = (f.castleMinX + f.castleMaxX) / 2 - LAUNCH.x;
+      const v2 = (9.81 * R) / Math.sin(Math.PI / 2);
+      for (let x = LAUNCH.x; x <= aim.maxX; x += 0.25) {
+        const y = LAUNCH.y + (x - LAUNCH.x) - (9.81 * (x - LAUNCH.x) ** 2) / v2;
+        expect(onScreen(aim, x, y, x, y)[1]!, `${tag} x ${x} m`).toBeGreaterThanOrEqual(70);
+      }
       // The castle's view: the castle and the rock whole, and at least 1.25 x the field view's pixels a metre.
       expect(inside(onScreen(close, f.castleMinX, f.floor, rockRight(f.castleMaxX), Math.max(f.castleTop, 2 * ROCK.hy))), tag).toBe(true);
       expect(close.maxX - close.minX, tag).toBeLessThan((field.maxX - field.minX) / 1.25);

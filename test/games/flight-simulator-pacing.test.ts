@@ -10,7 +10,7 @@
 
 import { createGameLoop } from '@bitphysics/game-kit';
 import { describe, expect, it } from 'vitest';
-import { labelClearOf, type ScreenBox } from '../../games/flight-simulator/label-place';
+import { clearOfBox, labelClearOf, type ScreenBox } from '../../games/flight-simulator/label-place';
 import { FLIGHT_STEP, FRAME_CAP, gameTimeOfFrame, SLOW_MOTION_FPS, STEPS_PER_FRAME, slowMotion } from '../../games/flight-simulator/pacing';
 import { NEAR_FADE, nearFade } from '../../games/flight-simulator/ring-fade';
 import { offScreenLabel, TURN_BEARING } from '../../games/flight-simulator/ring-pointer';
@@ -161,6 +161,43 @@ describe('the ring label keeps clear of the messages (label-place.ts)', () => {
   it('throws on a negative half size or box', () => {
     expect(() => labelClearOf(0, 0, -1, 12, [], 650, 10)).toThrow(/labelClearOf: halfW/);
     expect(() => labelClearOf(0, 0, 1, 12, [[0, 0, -5, 4]], 650, 10)).toThrow(/labelClearOf: a box/);
+  });
+});
+
+describe('the ring label keeps clear of the flight-path marker drawn over it (label-place.ts clearOfBox)', () => {
+  // A phone's scene, 390 x 650 px (above nothing), 10 px from each edge. The label for a ring off to
+  // the left, as a stranger saw it on a 390 x 844 phone: "◀ ring 1 · 130 m · turn left" at the left
+  // edge, 252 x 30 px (half 126 x 15) centred at (136, 468), under the marker drawn at (197, 460):
+  // its box 46 x 27 px and 7 px of outline and shadow round it, 60 x 41 px. Gap 6 px (LABEL_GAP).
+  const scene = { w: 390, h: 650, margin: 10 };
+  const marker: ScreenBox = [197 - 30, 460 - 20.5, 60, 41];
+  const overlap = ([x, y]: [number, number], hw: number, hh: number, b: ScreenBox) =>
+    Math.max(0, Math.min(x + hw, b[0] + b[2]) - Math.max(x - hw, b[0])) *
+    Math.max(0, Math.min(y + hh, b[1] + b[3]) - Math.max(y - hh, b[1]));
+  it('moves a label under the marker the least way clear of it, by the gap, inside the scene', () => {
+    // Where it was placed it covers 60 x 27.5 px of the marker's drawing (1 650 px²).
+    expect(overlap([136, 468], 126, 15, marker)).toBe(1650);
+    const moved = clearOfBox(136, 468, 126, 15, marker, 6, scene);
+    // Below the marker (its foot at 480.5, + 6 + 15): 33.5 px down, the least move (up is 49.5 px;
+    // left and right leave the scene).
+    expect(moved).toEqual([136, 501.5]);
+    expect(overlap(moved, 126 + 6, 15 + 6, marker)).toBe(0);
+  });
+  it('takes the next least move where the least lands on a message or leaves the scene', () => {
+    // A message box under the marker: the label goes up instead.
+    expect(clearOfBox(136, 468, 126, 15, marker, 6, { ...scene, avoid: [[20, 490, 350, 60]] })).toEqual([136, 460 - 20.5 - 6 - 15]);
+    // The marker near the scene's foot: no room under it, so up.
+    const low: ScreenBox = [167, 600, 60, 41];
+    expect(clearOfBox(136, 615, 126, 15, low, 6, scene)).toEqual([136, 600 - 6 - 15]);
+  });
+  it('leaves a label clear of the marker where it is, and one with no open move where it was placed', () => {
+    expect(clearOfBox(136, 400, 126, 15, marker, 6, scene)).toEqual([136, 400]);
+    expect(clearOfBox(195, 325, 180, 300, marker, 6, scene)).toEqual([195, 325]);
+  });
+  it('throws on a negative size, gap or margin, or box', () => {
+    expect(() => clearOfBox(0, 0, -1, 12, marker, 6, scene)).toThrow(/clearOfBox: halfW/);
+    expect(() => clearOfBox(0, 0, 1, 12, marker, 6, { ...scene, margin: Number.NaN })).toThrow(/clearOfBox: margin/);
+    expect(() => clearOfBox(0, 0, 1, 12, [0, 0, -5, 4], 6, scene)).toThrow(/clearOfBox: a box/);
   });
 });
 
