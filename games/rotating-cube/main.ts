@@ -373,15 +373,17 @@ function createWorld(): PhysicsWorld {
   return world;
 }
 
-// Read by frame() and the step, which the shell may call before this module's code after the await below has run.
+// Read by frame() and the step, which the shell may call before this module's code after `startThreeGame` has run.
 /** The page's sound (impacts, pushes, the pads' chimes). */
 const sound = getSound();
 const L = new Float64Array(3),
   wb = new Float64Array(3);
 let lastPlotted = -1,
   frames = 0,
-  /** Whether `fitBesideDrawer` is defined with what it reads (frames run while this module still awaits the plot). */
-  framingReady = false;
+  /** Whether `fitBesideDrawer` may run: what it reads is defined further down this module (set once it is, before the first frame). */
+  framingReady = false,
+  /** Frames drawn in the room on a tall stage before `fitBesideDrawer` could frame it (it would move the room once it could). */
+  unframedFrames = 0;
 
 /**
  * The pixel ratio to render at: the kit's default (the device's, at most 2; SOFTWARE_PIXEL_RATIO, a
@@ -2295,26 +2297,29 @@ box.append(readout);
 pageLayout().side.append(box);
 // The plot is optional: uPlot throws while loading when the browser reports a locale Intl rejects
 // (headless Chromium under LANG=C.UTF-8 says 'en-US@posix'), so it is loaded lazily and skipped then.
+// Not awaited: the rest of this module (the phone's framing of the room, the hooks) is in place
+// before the first frame is drawn, so the room does not jump once the plot's code has arrived.
 let plot: Plot | null = null;
-try {
-  const { createPlot } = await import('@bitphysics/game-kit/plot');
-  plot = createPlot({
-    parent: box,
-    title: 'ω in the body frame (rad/s)',
-    xLabel: 'time (s)',
-    width: 340,
-    height: 170,
-    capacity: 900,
-    redrawEvery: 10,
-    series: [
-      { label: 'ω_x', color: '#ff5a5f' },
-      { label: 'ω_y', color: '#5fd068' },
-      { label: 'ω_z', color: '#4d8dff' },
-    ],
+import('@bitphysics/game-kit/plot')
+  .then(({ createPlot }) => {
+    plot = createPlot({
+      parent: box,
+      title: 'ω in the body frame (rad/s)',
+      xLabel: 'time (s)',
+      width: 340,
+      height: 170,
+      capacity: 900,
+      redrawEvery: 10,
+      series: [
+        { label: 'ω_x', color: '#ff5a5f' },
+        { label: 'ω_y', color: '#5fd068' },
+        { label: 'ω_z', color: '#4d8dff' },
+      ],
+    });
+  })
+  .catch((error: unknown) => {
+    console.warn('rotating-cube: no plot:', error instanceof Error ? error.message : error);
   });
-} catch (error) {
-  console.warn('rotating-cube: no plot:', error instanceof Error ? error.message : error);
-}
 
 /** Per frame: key torque, arrows, readout, plot. */
 function frame(): void {
@@ -2373,7 +2378,10 @@ function frame(): void {
   }
   drawSpinTarget();
   // On a phone the room's framing follows the camera (it eases into its view after a load, and the player orbits it).
-  if (framingReady && tallStage() && params.mode === 'room') fitBesideDrawer();
+  if (tallStage() && params.mode === 'room') {
+    if (framingReady) fitBesideDrawer();
+    else unframedFrames++;
+  }
   if (frames % 3 === 0) updateNet();
   // The lit pad glows (pulsing) while the room's round runs; the ones to come are outlined, the ones reached gold.
   const room = params.mode === 'room';
@@ -2564,6 +2572,13 @@ function fitBesideDrawer(): void {
 }
 new MutationObserver(fitBesideDrawer).observe(pageLayout().root, { attributes: true, attributeFilter: ['data-open'] });
 window.addEventListener('resize', fitBesideDrawer);
+// A new stage size (the touch bars and the status row taking their room after the first layout):
+// the kit's observer, older so called first, sizes the canvas and draws it again at once; framed
+// again here and drawn once more, the frame shown at the new size has the room where it stays.
+new ResizeObserver(() => {
+  fitBesideDrawer();
+  app.renderer.render(app.scene, app.camera);
+}).observe(app.canvas.parentElement ?? document.body);
 fitBesideDrawer();
 framingReady = true;
 
@@ -2642,6 +2657,8 @@ shell.expose({
    * from the face), its unit direction (dx, dz), speed (m/s) and the point it aims at (x, z, m); or null.
    */
   lastPush: (): Push | null => (lastPush ? { ...lastPush } : null),
+  /** Frames drawn in the room on a tall stage (a phone) before it was framed there: 0, or the room moved after the load. */
+  unframedFrames: (): number => unframedFrames,
   /**
    * The lit pad's state: whether the cube's centre is over its counting square (its rim drawn), and
    * why a cube resting there does not count ('face', 'slide'; '' when it does or does not rest there);

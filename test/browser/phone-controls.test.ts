@@ -696,6 +696,9 @@ describe('phone controls', () => {
     // A fixed layout (?seed=11: the first pad at x = 1.5 m, z = 0.2 m), room to roll left: a random one may put the pad by a wall.
     const g = await h.openGame('rotating-cube', { ...PHONE, query: { seed: 11 } });
     await g.waitFor(() => document.querySelector('[data-hud="challenge"]')?.textContent?.includes('glowing pad') ?? false, null);
+    // Every frame since the load drew the room framed for the phone: while the page awaited its plot's
+    // code (a frame or more, every load) the first frames showed it 42 px higher, then it dropped.
+    expect(await read(g, 'unframedFrames()')).toBe(0);
     // Landed and paused; then the screen point of the cube's top face 0.3 m on its -x side, once two
     // frames in a row put it in the same place (the camera may still be easing into its framing).
     await g.page.evaluate(() => {
