@@ -131,6 +131,7 @@ import {
   ROOM_PUSH,
   type RotatingCubeHandles,
   rollSettle,
+  rollStart,
   rotatingCubeWorldOptions,
   SLID_ON_MOVES,
   slideSpeed,
@@ -402,6 +403,9 @@ const game = await startThreeGame({
   bodies: () => 1,
   // Every step's impacts of the cube on the floor and the walls knock, louder the harder.
   step: (world) => {
+    // Keys pressed since the last frame act from this frame's first step: read only after the steps
+    // (in `frame`), a tap on ▲ waited a whole frame before the cube began to tip.
+    if (pressed.size > 0) updateKeyTorque();
     physicsStep(world);
     if (params.mode === 'room')
       forEachImpact(world, (a, b, impulse) => {
@@ -1315,7 +1319,7 @@ function snapToEdge(ax: number, az: number): void {
 
 /**
  * Room mode, after rollAxis is set from the keys held: on a new roll key press (`fresh`) latches the
- * level part of rollAxis; while no roll key is held (`rolling` false) and the latch is on, rolls on
+ * level part of rollAxis and sets a cube at rest turning over its edge (scene.ts `rollStart`); while no roll key is held (`rolling` false) and the latch is on, rolls on
  * about the latched axis until the cube has turned ROLL_LATCH_ANGLE since the press or
  * ROLL_LATCH_TIME s have passed (against a wall it may never turn that far).
  */
@@ -1334,6 +1338,9 @@ function latchRoll(fresh: boolean, rolling: boolean): void {
     latchQ[3] = q.w[e]!;
     latchUntil = t + ROLL_LATCH_TIME;
     settleArmed = true;
+    // A cube at rest starts turning over its edge at once (scene.ts rollStart): the torque alone left it
+    // barely moving for the first tenth of a second after the press.
+    rollStart(shell.world, e, latchAxis[0]!, latchAxis[2]!);
   }
   if (rolling || t >= latchUntil) return;
   const dot = Math.abs(latchQ[0]! * q.x[e]! + latchQ[1]! * q.y[e]! + latchQ[2]! * q.z[e]! + latchQ[3]! * q.w[e]!);
