@@ -2511,9 +2511,10 @@ const corner = new Vector3();
  * camera's view offset and zoom (its position and the orbit stay as they are): with the settings
  * drawer open over the stage (a wide window: the game arrangement's drawer) the part left of it,
  * shifted left and zoomed out when it would not fit; on a tall stage (a phone) the room's floor
- * between the face net and the touch card (TOUCH_CARD_SPACE above the stage's foot), zoomed out
- * (the net and the rules card covered the back of the room; the back wall's top may stay under
- * them) and as low as that leaves it (centred between the net and ROOM_FOOT_SPACE above the foot, so
+ * between the face net and the touch card (TOUCH_CARD_SPACE above the stage's foot), as large as
+ * that band and the width allow (the floor's width and TALL_SIDE_MARGIN, zoomed at most
+ * TALL_ZOOM_MAX; the walls' thickness and the back wall's top may run past the sides and under the
+ * net) and as low as that leaves it (centred between the net and ROOM_FOOT_SPACE above the foot, so
  * the front wall's foot sits just above the buttons rather than over an empty strip). The same
  * framing holds whether the touch card shows or not: the room does not move when it goes.
  * Otherwise, and on the pivot, the camera's own framing.
@@ -2522,6 +2523,10 @@ const corner = new Vector3();
 const TOUCH_CARD_SPACE = 80;
 /** On a tall stage, the height above the stage's foot that the room is centred above when that leaves the floor clear of the touch card, CSS px. */
 const ROOM_FOOT_SPACE = 8;
+/** On a tall stage, how far past the floor's side edges the width fitted reaches, m (a strip of the walls' feet: the floor's edge reads as the room's). */
+const TALL_SIDE_MARGIN = 0.1;
+/** On a tall stage, the most the room is magnified past the camera's own framing of it (the room's box with walls 1 m high). */
+const TALL_ZOOM_MAX = 1.3;
 function fitBesideDrawer(): void {
   const cam = app.camera;
   cam.clearViewOffset();
@@ -2548,13 +2553,14 @@ function fitBesideDrawer(): void {
         ay = Math.min(ay, corner.y);
         by = Math.max(by, corner.y);
       }
-  // Under the net (a phone held upright) the height is the floor's, and the width the walls' outer
-  // feet: the floor and the walls' full thickness at it stay in sight, while the tops of the side
-  // walls, leaning out towards the camera, may run past the screen's sides (fitting them too left
-  // the room a third of the phone's height).
+  // Under the net (a phone held upright) the height is the floor's, and the width the floor's with
+  // TALL_SIDE_MARGIN of the walls' feet: the whole floor stays in sight, as large as the phone's width
+  // lets it be, while the walls' thickness and their tops, leaning out towards the camera, may run
+  // past the screen's sides (fitting the walls' outer feet kept the floor to 85% of the width, the
+  // cube some 50 px; fitting their tops too left the room a third of the phone's height).
   let wx = 0;
   if (below > 0) {
-    const outer = ROOM_HALF + 2 * WALL_HALF_THICKNESS;
+    const outer = ROOM_HALF + TALL_SIDE_MARGIN;
     for (const x of [-outer, outer]) for (const z of [-outer, outer]) wx = Math.max(wx, Math.abs(corner.set(x, 0, z).project(cam).x));
   }
   if (covered > 0) {
@@ -2570,7 +2576,7 @@ function fitBesideDrawer(): void {
     const r = 1 - (2 * below) / c.height,
       l = -1 + (2 * TOUCH_CARD_SPACE) / c.height,
       foot = -1 + (2 * ROOM_FOOT_SPACE) / c.height;
-    const k = Math.min(1, (0.98 * (r - l)) / (by - ay), 0.98 / wx);
+    const k = Math.min(TALL_ZOOM_MAX, (0.98 * (r - l)) / (by - ay), 0.98 / wx);
     const shift = Math.max((r + foot) / 2 - (k * (ay + by)) / 2, l + 0.01 * (r - l) - k * ay);
     cam.zoom = k;
     cam.setViewOffset(c.width, c.height, 0, (shift * c.height) / 2, c.width, c.height);
