@@ -1473,7 +1473,7 @@ canvas.addEventListener('pointerup', (event) => {
   if (clickAt(ndc[0], ndc[1])) {
     hover = false;
     aimUntil = performance.now() + 600;
-  } else sayWhyNot();
+  } else if (!rollToTapped()) sayWhyNot();
 });
 // A mouse shows where a click would push the cube; a finger (no hover) sees it after its tap.
 canvas.addEventListener('pointermove', (event) => {
@@ -1596,6 +1596,25 @@ function aimAt(ndcX: number, ndcY: number): Push | null {
   }
   Object.assign(aim, { kind: 'floor', dx: (x - cx) / dist, dz: (z - cz) / dist, speed: slideSpeed(dist), x, z });
   return aim;
+}
+
+/**
+ * Room mode, after a click or tap that `aimAt` refused for the lit pad's ROLL tiles (`aimWhy` 'bed'):
+ * when the cell clicked is next to the cube's own (across a side, not a corner), presses the roll key
+ * towards it (`rollKeyOf`; a key event, as the arrow buttons send), so a tap on a ROLL tile beside the
+ * cube rolls it there instead of only saying to roll. @returns whether it did.
+ */
+function rollToTapped(): boolean {
+  if (aimWhy !== 'bed' || params.mode !== 'room') return false;
+  const P = shell.world.components.Position,
+    e = handles.body;
+  const [cx, cz] = cellAt(P.x[e]!, P.z[e]!);
+  const di = Math.round(hoverCell[0] - cx),
+    dj = Math.round(hoverCell[1] - cz);
+  if (Math.abs(di) + Math.abs(dj) !== 1) return false;
+  const key = rollKeyOf(di > 0 ? 0 : di < 0 ? 1 : dj > 0 ? 4 : 5);
+  for (const type of ['keydown', 'keyup'] as const) window.dispatchEvent(new KeyboardEvent(type, { key, bubbles: true, cancelable: true }));
+  return true;
 }
 
 /** Says in the pop why the click just made (`aimWhy`) moved nothing, and flashes a red ring on the cell clicked. */
@@ -1887,6 +1906,12 @@ hintRing.visible = false;
 app.scene.add(hintRing);
 /** The key (on a phone the arrow) that rolls the cube along level world direction `d` (0 +x, 1 -x, 4 +z, 5 -z) with the camera where it is. */
 function rollKey(d: number): string {
+  const key = rollKeyOf(d);
+  const arrows: Record<string, string> = { w: '▲', s: '▼', a: '◀', d: '▶' };
+  return touch ? arrows[key]! : key.toUpperCase();
+}
+/** The roll key ('w', 'a', 's' or 'd') that rolls the cube along level world direction `d` (0 +x, 1 -x, 4 +z, 5 -z) with the camera where it is. */
+function rollKeyOf(d: number): string {
   app.camera.matrixWorld.extractBasis(right, up, back);
   const tx = d === 0 ? 1 : d === 1 ? -1 : 0,
     tz = d === 4 ? 1 : d === 5 ? -1 : 0;
@@ -1899,8 +1924,7 @@ function rollKey(d: number): string {
   ];
   let best = keys[0]!;
   for (const k of keys) if (k[1] * tx + k[2] * tz > best[1] * tx + best[2] * tz) best = k;
-  const arrows: Record<string, string> = { w: '▲', s: '▼', a: '◀', d: '▶' };
-  return touch ? arrows[best[0]]! : best[0].toUpperCase();
+  return best[0];
 }
 /**
  * Whether this page visit has won a pad that wants a face (the first such pad of the first round
