@@ -19,7 +19,7 @@ export function cubeControls(mode: Mode, touch: boolean): ControlHint[] {
     room
       ? touch
         ? { keys: 'Tap', action: 'a floor cell: slide the cube onto it; drag across the cube: flick it', touch: 'Tap' }
-        : { keys: 'Click', action: "a floor cell: slide the cube onto it (not into a pad's ROLL tiles: roll there)", touch: 'Tap' }
+        : { keys: 'Click', action: 'a floor cell: slide the cube onto it (a ROLL tile beside it: roll onto it)', touch: 'Tap' }
       : { keys: 'Click', action: 'a face: knock it there', touch: 'Tap' },
     room
       ? { keys: 'W A S D', action: 'roll the cube over an edge: away, left, toward you, right', touch: '▲ ◀ ▼ ▶' }

@@ -131,6 +131,7 @@ import {
   ROOM_PUSH,
   type RotatingCubeHandles,
   rollSettle,
+  rollStart,
   rotatingCubeWorldOptions,
   SLID_ON_MOVES,
   slideSpeed,
@@ -373,15 +374,17 @@ function createWorld(): PhysicsWorld {
   return world;
 }
 
-// Read by frame() and the step, which the shell may call before this module's code after the await below has run.
+// Read by frame() and the step, which the shell may call before this module's code after `startThreeGame` has run.
 /** The page's sound (impacts, pushes, the pads' chimes). */
 const sound = getSound();
 const L = new Float64Array(3),
   wb = new Float64Array(3);
 let lastPlotted = -1,
   frames = 0,
-  /** Whether `fitBesideDrawer` is defined with what it reads (frames run while this module still awaits the plot). */
-  framingReady = false;
+  /** Whether `fitBesideDrawer` may run: what it reads is defined further down this module (set once it is, before the first frame). */
+  framingReady = false,
+  /** Frames drawn in the room on a tall stage before `fitBesideDrawer` could frame it (it would move the room once it could). */
+  unframedFrames = 0;
 
 /**
  * The pixel ratio to render at: the kit's default (the device's, at most 2; SOFTWARE_PIXEL_RATIO, a
@@ -400,6 +403,9 @@ const game = await startThreeGame({
   bodies: () => 1,
   // Every step's impacts of the cube on the floor and the walls knock, louder the harder.
   step: (world) => {
+    // Keys pressed since the last frame act from this frame's first step: read only after the steps
+    // (in `frame`), a tap on ▲ waited a whole frame before the cube began to tip.
+    if (pressed.size > 0) updateKeyTorque();
     physicsStep(world);
     if (params.mode === 'room')
       forEachImpact(world, (a, b, impulse) => {
@@ -1313,7 +1319,7 @@ function snapToEdge(ax: number, az: number): void {
 
 /**
  * Room mode, after rollAxis is set from the keys held: on a new roll key press (`fresh`) latches the
- * level part of rollAxis; while no roll key is held (`rolling` false) and the latch is on, rolls on
+ * level part of rollAxis and sets a cube at rest turning over its edge (scene.ts `rollStart`); while no roll key is held (`rolling` false) and the latch is on, rolls on
  * about the latched axis until the cube has turned ROLL_LATCH_ANGLE since the press or
  * ROLL_LATCH_TIME s have passed (against a wall it may never turn that far).
  */
@@ -1332,6 +1338,9 @@ function latchRoll(fresh: boolean, rolling: boolean): void {
     latchQ[3] = q.w[e]!;
     latchUntil = t + ROLL_LATCH_TIME;
     settleArmed = true;
+    // A cube at rest starts turning over its edge at once (scene.ts rollStart): the torque alone left it
+    // barely moving for the first tenth of a second after the press.
+    rollStart(shell.world, e, latchAxis[0]!, latchAxis[2]!);
   }
   if (rolling || t >= latchUntil) return;
   const dot = Math.abs(latchQ[0]! * q.x[e]! + latchQ[1]! * q.y[e]! + latchQ[2]! * q.z[e]! + latchQ[3]! * q.w[e]!);
@@ -1464,7 +1473,7 @@ canvas.addEventListener('pointerup', (event) => {
   if (clickAt(ndc[0], ndc[1])) {
     hover = false;
     aimUntil = performance.now() + 600;
-  } else sayWhyNot();
+  } else if (!rollToTapped()) sayWhyNot();
 });
 // A mouse shows where a click would push the cube; a finger (no hover) sees it after its tap.
 canvas.addEventListener('pointermove', (event) => {
@@ -1587,6 +1596,25 @@ function aimAt(ndcX: number, ndcY: number): Push | null {
   }
   Object.assign(aim, { kind: 'floor', dx: (x - cx) / dist, dz: (z - cz) / dist, speed: slideSpeed(dist), x, z });
   return aim;
+}
+
+/**
+ * Room mode, after a click or tap that `aimAt` refused for the lit pad's ROLL tiles (`aimWhy` 'bed'):
+ * when the cell clicked is next to the cube's own (across a side, not a corner), presses the roll key
+ * towards it (`rollKeyOf`; a key event, as the arrow buttons send), so a tap on a ROLL tile beside the
+ * cube rolls it there instead of only saying to roll. @returns whether it did.
+ */
+function rollToTapped(): boolean {
+  if (aimWhy !== 'bed' || params.mode !== 'room') return false;
+  const P = shell.world.components.Position,
+    e = handles.body;
+  const [cx, cz] = cellAt(P.x[e]!, P.z[e]!);
+  const di = Math.round(hoverCell[0] - cx),
+    dj = Math.round(hoverCell[1] - cz);
+  if (Math.abs(di) + Math.abs(dj) !== 1) return false;
+  const key = rollKeyOf(di > 0 ? 0 : di < 0 ? 1 : dj > 0 ? 4 : 5);
+  for (const type of ['keydown', 'keyup'] as const) window.dispatchEvent(new KeyboardEvent(type, { key, bubbles: true, cancelable: true }));
+  return true;
 }
 
 /** Says in the pop why the click just made (`aimWhy`) moved nothing, and flashes a red ring on the cell clicked. */
@@ -1878,6 +1906,12 @@ hintRing.visible = false;
 app.scene.add(hintRing);
 /** The key (on a phone the arrow) that rolls the cube along level world direction `d` (0 +x, 1 -x, 4 +z, 5 -z) with the camera where it is. */
 function rollKey(d: number): string {
+  const key = rollKeyOf(d);
+  const arrows: Record<string, string> = { w: '▲', s: '▼', a: '◀', d: '▶' };
+  return touch ? arrows[key]! : key.toUpperCase();
+}
+/** The roll key ('w', 'a', 's' or 'd') that rolls the cube along level world direction `d` (0 +x, 1 -x, 4 +z, 5 -z) with the camera where it is. */
+function rollKeyOf(d: number): string {
   app.camera.matrixWorld.extractBasis(right, up, back);
   const tx = d === 0 ? 1 : d === 1 ? -1 : 0,
     tz = d === 4 ? 1 : d === 5 ? -1 : 0;
@@ -1890,8 +1924,7 @@ function rollKey(d: number): string {
   ];
   let best = keys[0]!;
   for (const k of keys) if (k[1] * tx + k[2] * tz > best[1] * tx + best[2] * tz) best = k;
-  const arrows: Record<string, string> = { w: '▲', s: '▼', a: '◀', d: '▶' };
-  return touch ? arrows[best[0]]! : best[0].toUpperCase();
+  return best[0];
 }
 /**
  * Whether this page visit has won a pad that wants a face (the first such pad of the first round
@@ -2295,26 +2328,29 @@ box.append(readout);
 pageLayout().side.append(box);
 // The plot is optional: uPlot throws while loading when the browser reports a locale Intl rejects
 // (headless Chromium under LANG=C.UTF-8 says 'en-US@posix'), so it is loaded lazily and skipped then.
+// Not awaited: the rest of this module (the phone's framing of the room, the hooks) is in place
+// before the first frame is drawn, so the room does not jump once the plot's code has arrived.
 let plot: Plot | null = null;
-try {
-  const { createPlot } = await import('@bitphysics/game-kit/plot');
-  plot = createPlot({
-    parent: box,
-    title: 'ω in the body frame (rad/s)',
-    xLabel: 'time (s)',
-    width: 340,
-    height: 170,
-    capacity: 900,
-    redrawEvery: 10,
-    series: [
-      { label: 'ω_x', color: '#ff5a5f' },
-      { label: 'ω_y', color: '#5fd068' },
-      { label: 'ω_z', color: '#4d8dff' },
-    ],
+import('@bitphysics/game-kit/plot')
+  .then(({ createPlot }) => {
+    plot = createPlot({
+      parent: box,
+      title: 'ω in the body frame (rad/s)',
+      xLabel: 'time (s)',
+      width: 340,
+      height: 170,
+      capacity: 900,
+      redrawEvery: 10,
+      series: [
+        { label: 'ω_x', color: '#ff5a5f' },
+        { label: 'ω_y', color: '#5fd068' },
+        { label: 'ω_z', color: '#4d8dff' },
+      ],
+    });
+  })
+  .catch((error: unknown) => {
+    console.warn('rotating-cube: no plot:', error instanceof Error ? error.message : error);
   });
-} catch (error) {
-  console.warn('rotating-cube: no plot:', error instanceof Error ? error.message : error);
-}
 
 /** Per frame: key torque, arrows, readout, plot. */
 function frame(): void {
@@ -2373,7 +2409,10 @@ function frame(): void {
   }
   drawSpinTarget();
   // On a phone the room's framing follows the camera (it eases into its view after a load, and the player orbits it).
-  if (framingReady && tallStage() && params.mode === 'room') fitBesideDrawer();
+  if (tallStage() && params.mode === 'room') {
+    if (framingReady) fitBesideDrawer();
+    else unframedFrames++;
+  }
   if (frames % 3 === 0) updateNet();
   // The lit pad glows (pulsing) while the room's round runs; the ones to come are outlined, the ones reached gold.
   const room = params.mode === 'room';
@@ -2496,9 +2535,10 @@ const corner = new Vector3();
  * camera's view offset and zoom (its position and the orbit stay as they are): with the settings
  * drawer open over the stage (a wide window: the game arrangement's drawer) the part left of it,
  * shifted left and zoomed out when it would not fit; on a tall stage (a phone) the room's floor
- * between the face net and the touch card (TOUCH_CARD_SPACE above the stage's foot), zoomed out
- * (the net and the rules card covered the back of the room; the back wall's top may stay under
- * them) and as low as that leaves it (centred between the net and ROOM_FOOT_SPACE above the foot, so
+ * between the face net and the touch card (TOUCH_CARD_SPACE above the stage's foot), as large as
+ * that band and the width allow (the floor's width and TALL_SIDE_MARGIN, zoomed at most
+ * TALL_ZOOM_MAX; the walls' thickness and the back wall's top may run past the sides and under the
+ * net) and as low as that leaves it (centred between the net and ROOM_FOOT_SPACE above the foot, so
  * the front wall's foot sits just above the buttons rather than over an empty strip). The same
  * framing holds whether the touch card shows or not: the room does not move when it goes.
  * Otherwise, and on the pivot, the camera's own framing.
@@ -2507,6 +2547,10 @@ const corner = new Vector3();
 const TOUCH_CARD_SPACE = 80;
 /** On a tall stage, the height above the stage's foot that the room is centred above when that leaves the floor clear of the touch card, CSS px. */
 const ROOM_FOOT_SPACE = 8;
+/** On a tall stage, how far past the floor's side edges the width fitted reaches, m (a strip of the walls' feet: the floor's edge reads as the room's). */
+const TALL_SIDE_MARGIN = 0.1;
+/** On a tall stage, the most the room is magnified past the camera's own framing of it (the room's box with walls 1 m high). */
+const TALL_ZOOM_MAX = 1.3;
 function fitBesideDrawer(): void {
   const cam = app.camera;
   cam.clearViewOffset();
@@ -2533,13 +2577,14 @@ function fitBesideDrawer(): void {
         ay = Math.min(ay, corner.y);
         by = Math.max(by, corner.y);
       }
-  // Under the net (a phone held upright) the height is the floor's, and the width the walls' outer
-  // feet: the floor and the walls' full thickness at it stay in sight, while the tops of the side
-  // walls, leaning out towards the camera, may run past the screen's sides (fitting them too left
-  // the room a third of the phone's height).
+  // Under the net (a phone held upright) the height is the floor's, and the width the floor's with
+  // TALL_SIDE_MARGIN of the walls' feet: the whole floor stays in sight, as large as the phone's width
+  // lets it be, while the walls' thickness and their tops, leaning out towards the camera, may run
+  // past the screen's sides (fitting the walls' outer feet kept the floor to 85% of the width, the
+  // cube some 50 px; fitting their tops too left the room a third of the phone's height).
   let wx = 0;
   if (below > 0) {
-    const outer = ROOM_HALF + 2 * WALL_HALF_THICKNESS;
+    const outer = ROOM_HALF + TALL_SIDE_MARGIN;
     for (const x of [-outer, outer]) for (const z of [-outer, outer]) wx = Math.max(wx, Math.abs(corner.set(x, 0, z).project(cam).x));
   }
   if (covered > 0) {
@@ -2555,7 +2600,7 @@ function fitBesideDrawer(): void {
     const r = 1 - (2 * below) / c.height,
       l = -1 + (2 * TOUCH_CARD_SPACE) / c.height,
       foot = -1 + (2 * ROOM_FOOT_SPACE) / c.height;
-    const k = Math.min(1, (0.98 * (r - l)) / (by - ay), 0.98 / wx);
+    const k = Math.min(TALL_ZOOM_MAX, (0.98 * (r - l)) / (by - ay), 0.98 / wx);
     const shift = Math.max((r + foot) / 2 - (k * (ay + by)) / 2, l + 0.01 * (r - l) - k * ay);
     cam.zoom = k;
     cam.setViewOffset(c.width, c.height, 0, (shift * c.height) / 2, c.width, c.height);
@@ -2564,6 +2609,13 @@ function fitBesideDrawer(): void {
 }
 new MutationObserver(fitBesideDrawer).observe(pageLayout().root, { attributes: true, attributeFilter: ['data-open'] });
 window.addEventListener('resize', fitBesideDrawer);
+// A new stage size (the touch bars and the status row taking their room after the first layout):
+// the kit's observer, older so called first, sizes the canvas and draws it again at once; framed
+// again here and drawn once more, the frame shown at the new size has the room where it stays.
+new ResizeObserver(() => {
+  fitBesideDrawer();
+  app.renderer.render(app.scene, app.camera);
+}).observe(app.canvas.parentElement ?? document.body);
 fitBesideDrawer();
 framingReady = true;
 
@@ -2642,6 +2694,8 @@ shell.expose({
    * from the face), its unit direction (dx, dz), speed (m/s) and the point it aims at (x, z, m); or null.
    */
   lastPush: (): Push | null => (lastPush ? { ...lastPush } : null),
+  /** Frames drawn in the room on a tall stage (a phone) before it was framed there: 0, or the room moved after the load. */
+  unframedFrames: (): number => unframedFrames,
   /**
    * The lit pad's state: whether the cube's centre is over its counting square (its rim drawn), and
    * why a cube resting there does not count ('face', 'slide'; '' when it does or does not rest there);

@@ -78,6 +78,43 @@ export const PUSH_SPEED_MAX = 7;
  */
 export const ROLL_TORQUE = 10;
 export const ROLL_SPIN_MAX = 2.6;
+/**
+ * Room mode: the spin a roll key's press gives a cube resting flat at once, rad/s, about the bottom
+ * edge it rolls over (`rollStart`): it tips from the press's first step (about a degree a step at 60
+ * steps a second), where ROLL_TORQUE alone moved it 0.1 degrees in its first step and 3 degrees only
+ * after 7 (a torque large enough to start it faster slips that edge on the floor and lands the cube
+ * off its cell). Short of ROLL_SPIN_MAX, so the torque still brings the roll to its usual pace.
+ */
+export const ROLL_START_SPIN = 1.1;
+
+/**
+ * Room mode: starts a roll of the cube `body` (a cube of edge 2 `half` m) when it rests flat and still
+ * (its centre under 0.53 m high, `cubeStill`): sets its spin to `spin` rad/s about the level unit axis
+ * (ax, 0, az), the roll's (y x d, the top going along the travel d), and its centre's velocity to the
+ * one that turning about its bottom edge on the side of d gives it (spin x (centre - edge)): that edge
+ * stays put on the floor, and no friction is needed to hold it. A cube not resting flat is left alone.
+ * @returns whether it started the roll.
+ */
+export function rollStart(world: PhysicsWorld, body: number, ax: number, az: number, spin = ROLL_START_SPIN, half = 0.5): boolean {
+  const P = world.components.Position,
+    V = world.components.Velocity,
+    W = world.components.AngularVelocity;
+  if (P.y[body]! > half + 0.03 || !cubeStill(world, body)) return false;
+  // The travel d = axis x y = (-az, 0, ax); centre - edge r = (-half d.x, half, -half d.z).
+  const rx = half * az,
+    ry = half,
+    rz = -half * ax;
+  const wx = spin * ax,
+    wz = spin * az;
+  W.x[body] = wx;
+  W.y[body] = 0;
+  W.z[body] = wz;
+  // v = w x r with w.y = 0.
+  V.x[body] = -wz * ry;
+  V.y[body] = wz * rx - wx * rz;
+  V.z[body] = wx * ry;
+  return true;
+}
 
 /**
  * Room mode: the speed, m/s, that a cube sliding on a face across the room's floor needs to stop after

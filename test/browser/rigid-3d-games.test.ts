@@ -1118,7 +1118,7 @@ describe('3D rigid-body games in headless Chromium', () => {
     await g.close();
   }, 240_000);
 
-  it('rotating-cube (room), 1280 x 800: a click on a pad ringed by ROLL tiles, or on a tile, leaves the cube where it is and says to roll onto it', async () => {
+  it('rotating-cube (room), 1280 x 800: a click on a pad ringed by ROLL tiles leaves the cube where it is and says to roll onto it; a click on the ROLL tile beside the cube rolls it there', async () => {
     type Game = { challenge(): { pad: number; moves: number; face: number }; pop(): { text: string; count: number } };
     const g = await h.openGame('rotating-cube', { query: { seed: 11 }, viewport: { width: 1280, height: 800 }, readyTimeoutMs: 60_000 });
     await waitCubeAtRest(g);
@@ -1139,24 +1139,31 @@ describe('3D rigid-body games in headless Chromium', () => {
     const [px, pz] = pads[2]!;
     await placeCube(g, px + 2, pz, 2);
     await waitCubeAtRest(g);
-    for (const [i, j] of [
-      [0, 0],
-      [1, 0],
-    ] as const) {
-      const moves = await g.page.evaluate(() => (window.game as unknown as Game).challenge().moves);
-      const pops = await g.page.evaluate(() => (window.game as unknown as Game).pop().count);
-      const at = await stillPageOf(g, px + i, 0, pz + j);
-      await g.page.mouse.click(at.x, at.y);
-      const said = await g.waitFor((n) => {
-        const p = (window.game as unknown as Game).pop();
-        return p.count > n ? p.text : null;
-      }, pops);
-      expect(said, `cell (${i}, ${j}) of the pad`).toContain('roll onto it');
-      await g.frames(10);
-      expect(await g.page.evaluate(() => (window.game as unknown as Game).challenge().moves)).toBe(moves);
-      const s = await cubeState(g);
-      expect(Math.hypot(s.x - (px + 2), s.z - pz), `cell (${i}, ${j}): the cube stays`).toBeLessThan(0.05);
-    }
+    // The pad, two cells from the cube: no slide, no move, the pop says to roll.
+    const moves = await g.page.evaluate(() => (window.game as unknown as Game).challenge().moves);
+    const pops = await g.page.evaluate(() => (window.game as unknown as Game).pop().count);
+    const pad = await stillPageOf(g, px, 0, pz);
+    await g.page.mouse.click(pad.x, pad.y);
+    const said = await g.waitFor((n) => {
+      const p = (window.game as unknown as Game).pop();
+      return p.count > n ? p.text : null;
+    }, pops);
+    expect(said).toContain('roll onto it');
+    await g.frames(10);
+    expect(await g.page.evaluate(() => (window.game as unknown as Game).challenge().moves)).toBe(moves);
+    const s = await cubeState(g);
+    expect(Math.hypot(s.x - (px + 2), s.z - pz), 'the cube stays').toBeLessThan(0.05);
+    // The ROLL tile beside the cube: the cube rolls onto it (the roll key towards it), one move, another face up.
+    const face = await g.page.evaluate(() => (window.game as unknown as Game).challenge().face);
+    const tile = await stillPageOf(g, px + 1, 0, pz);
+    await g.page.mouse.click(tile.x, tile.y);
+    await g.waitFor((f) => (window.game as unknown as Game).challenge().face !== f, face, 60_000);
+    await waitCubeAtRest(g);
+    const rolled = await cubeState(g);
+    // On the tile's cell: within 0.15 m of its centre (a roll with the game's settle lands within 0.065 m in
+    // the node model, rotating-cube-puzzle.test.ts; 0.15 m is the model's bound without it).
+    expect(Math.hypot(rolled.x - (px + 1), rolled.z - pz)).toBeLessThan(0.15);
+    expect(await g.page.evaluate(() => (window.game as unknown as Game).challenge().moves)).toBe(moves + 1);
     expect(g.errors).toEqual([]);
     await g.close();
   }, 240_000);

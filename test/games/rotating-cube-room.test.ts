@@ -12,6 +12,7 @@ import { roundEnd, starText } from '../../games/rotating-cube/round-end';
 import { padResultText } from '../../games/rotating-cube/round-moves';
 import {
   buildRotatingCube,
+  cubeStill,
   EDGES,
   FACES,
   FLIP_TIME,
@@ -34,6 +35,7 @@ import {
   ROLL_TORQUE,
   ROOM_HALF,
   restsOnPad,
+  rollStart,
   rotatingCubeWorldOptions,
   slideSpeed,
   topFace,
@@ -161,6 +163,55 @@ describe('rotating-cube room pushes', () => {
     for (let i = 0; i < 60; i++) step(world); // 1 s
     // Over at least one edge (a roll onto the next face carries the centre 1 m).
     expect(P.x[h.body]! - x0).toBeGreaterThan(0.9);
+  });
+
+  it('a roll key tips the resting cube 3 degrees within 3 steps (ROLL_TORQUE alone took 7), and a tap (torque until 55 degrees) still rolls it over one face only, onto its next cell', () => {
+    /** The resting cube pressed to roll towards +x, with `rollStart` or not, then torqued as the game's key until it has turned 55 degrees (its latch): steps to tip 3 degrees, and where it rests 2 s on. */
+    const run = (start: boolean) => {
+      const world = createPhysicsWorld(rotatingCubeWorldOptions());
+      const h = buildRotatingCube(world);
+      for (let i = 0; i < 180; i++) step(world);
+      const P = world.components.Position,
+        W = world.components.AngularVelocity,
+        q = world.components.Orientation,
+        e = h.body;
+      const x0 = P.x[e]!,
+        z0 = P.z[e]!,
+        top0 = topFace(world, e),
+        q0 = [q.x[e]!, q.y[e]!, q.z[e]!, q.w[e]!];
+      /** The angle the cube has turned since the press, degrees. */
+      const turned = () =>
+        (2 * Math.acos(Math.min(1, Math.abs(q0[0]! * q.x[e]! + q0[1]! * q.y[e]! + q0[2]! * q.z[e]! + q0[3]! * q.w[e]!))) * 180) / Math.PI;
+      let on = true,
+        tipped = -1;
+      // About -z: the top goes towards +x; the torque as the game's (none above ROLL_SPIN_MAX).
+      addSystem(
+        world,
+        'forces',
+        torqueCouple(e, () => [0, 0, on && -W.z[e]! < ROLL_SPIN_MAX ? -ROLL_TORQUE : 0]),
+      );
+      const started = start && rollStart(world, e, 0, -1);
+      for (let i = 1; i <= 120; i++) {
+        step(world);
+        if (tipped < 0 && turned() >= 3) tipped = i;
+        if (turned() >= 55) on = false;
+      }
+      return { started, tipped, travel: P.x[e]! - x0, drift: P.z[e]! - z0, turnedFace: topFace(world, e) !== top0, still: cubeStill(world, e) };
+    };
+    const pressed = run(true),
+      torqueOnly = run(false);
+    // Tipping visibly (3 degrees: 2.6 cm at the far edge) from the 3rd step (1/20 s); the torque alone took 7.
+    expect(pressed.started).toBe(true);
+    expect(pressed.tipped).toBeGreaterThan(0);
+    expect(pressed.tipped).toBeLessThanOrEqual(3);
+    expect(torqueOnly.tipped).toBeGreaterThanOrEqual(7);
+    // One face over and at rest, its centre on the next cell: 1 m along within 0.15 m (the torque alone: 1.12 m), not off to a side.
+    for (const r of [pressed, torqueOnly]) {
+      expect(r.turnedFace).toBe(true);
+      expect(r.still).toBe(true);
+      expect(Math.abs(r.travel - 1)).toBeLessThan(0.15);
+      expect(Math.abs(r.drift)).toBeLessThan(0.02);
+    }
   });
 
   it('the yaw keeper squares a knocked cube to its grid again, and turns it by exact quarter turns; unkept, a knock leaves it askew', () => {
@@ -359,6 +410,7 @@ describe('rotating-cube challenges', () => {
         expect(topFace(world, h.body)).not.toBe(want);
         // A slide onto the pad with the wanted face already up scores nothing: checked in the round test.
         torque = ROLL_TORQUE;
+        rollStart(world, h.body, dz, -dx);
         for (let i = 0; i < 240 && pads.pad === k; i++) {
           step(world);
           // As the game's roll keys: no push above ROLL_SPIN_MAX about the axis, none once past the tipping point.
@@ -648,6 +700,7 @@ describe('rotating-cube round ends and the moves-to-go indicator', () => {
         const sx = P.x[h.body]!,
           sz = P.z[h.body]!;
         torque = ROLL_TORQUE;
+        rollStart(world, h.body, dz, -dx);
         for (let i = 0; i < 240; i++) {
           step(world);
           const spin = W.x[h.body]! * dz - W.z[h.body]! * dx;
