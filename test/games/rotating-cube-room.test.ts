@@ -196,7 +196,14 @@ describe('rotating-cube room pushes', () => {
         if (tipped < 0 && turned() >= 3) tipped = i;
         if (turned() >= 55) on = false;
       }
-      return { started, tipped, travel: P.x[e]! - x0, drift: P.z[e]! - z0, turnedFace: topFace(world, e) !== top0, still: cubeStill(world, e) };
+      return {
+        started,
+        tipped,
+        travel: P.x[e]! - x0,
+        drift: P.z[e]! - z0,
+        turnedFace: topFace(world, e) !== top0,
+        still: cubeStill(world, e),
+      };
     };
     const pressed = run(true),
       torqueOnly = run(false);
