@@ -3,7 +3,10 @@
  * ordered (a dashed line by the hull and a cyan mark on the depth gauge, with figures, at the scene's right edge)
  * runs down or up at once, the vertical thrusters and (under way) the dive planes push at once and the
  * vents flood or blow the ballast tanks; let go and the boat stops on the ordered depth and holds it
- * (./helm.ts, ./planes.ts), a depth ladder behind the stern sliding past it meanwhile. Hold Nose down
+ * (./helm.ts, ./planes.ts), a depth ladder behind the stern sliding past it meanwhile. A held Dive
+ * or Rise stops level with the target beacon a moment (./level-stop.ts), and a dashed line at the
+ * target's depth runs from its ring back past the hull, green while the boat will pass through the
+ * ring (the label then reads "level ✓"). Hold Nose down
  * or up to pitch, and drive the screw ahead or astern (let go, the boat glides about a hull's length
  * and stops). A trail of glowing plankton leads from beacon to beacon round the mines (./trail.ts):
  * each glow caught scores, more for a streak of them (a first-time hint over the scene says how much). The hull floats by Archimedes (its submerged part of a 12 m x 3 m box), drags in proportion
