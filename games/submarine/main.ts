@@ -518,7 +518,8 @@ function heldInput(now: number, drive: -1 | 0 | 1): HelmInput {
 }
 
 /**
- * Whether any of 15 points of the screen box `box` (left, top, width, height, px) lies in the
+ * Whether any of a grid of points of the screen box `box` (left, top, width, height, px; at most 8
+ * px apart) lies in the
  * headlight's cone (./boat-drawing.ts inHeadlight) of the hull at `hull` (x, y, m, and its angle,
  * rad), drawn by `sx`, `sy` (world m to screen px) at `k` px/m.
  */
@@ -533,10 +534,14 @@ function boxInBeam(
     [hx = 0, hy = 0, angle = 0] = hull;
   const hc = Math.cos(angle),
     hs = Math.sin(angle);
-  for (let i = 0; i <= 4; i++)
-    for (let j = 0; j <= 2; j++) {
-      const wx = hx + (left + (width * i) / 4 - sx(hx)) / k,
-        wy = hy - (top + (height * j) / 2 - sy(hy)) / k;
+  // At most 8 px apart (in eighths of the width, halves of the height at least): the cone's edge
+  // crosses a long label between points further apart, and its tip fits between them.
+  const cols = 8 * Math.max(1, Math.ceil(width / 64)),
+    rows = 2 * Math.max(1, Math.ceil(height / 16));
+  for (let i = 0; i <= cols; i++)
+    for (let j = 0; j <= rows; j++) {
+      const wx = hx + (left + (width * i) / cols - sx(hx)) / k,
+        wy = hy - (top + (height * j) / rows - sy(hy)) / k;
       if (inHeadlight((wx - hx) * hc + (wy - hy) * hs, -(wx - hx) * hs + (wy - hy) * hc, SUBMARINE.length)) return true;
     }
   return false;
@@ -2759,7 +2764,8 @@ function draw(): void {
     // label over the lit water ahead of the bow) moves up or down, away from the cone's axis, until
     // none of its points is in the cone.
     aim.beam = false;
-    if (hyw < -HEADLIGHT.fromDepth) {
+    const offBeam = () => {
+      if (hyw >= -HEADLIGHT.fromDepth) return;
       const ha = c.Angle.value[e]!;
       // The label's pill: its text and 7 px, 2 px of padding round it.
       const lit = () =>
@@ -2783,7 +2789,8 @@ function draw(): void {
           for (let n = 0; n < 60 && lit(); n++) pointer.y += dir * 4;
         }
       }
-    }
+    };
+    offBeam();
     // Clear of the live mines in view: a label across one (on a phone the label of a beacon behind
     // spans most of the width at the boat's depth, over the mines ahead) moves past it, away from the hull.
     const offMines = () => {
@@ -2824,6 +2831,8 @@ function draw(): void {
       pointer.x = rightX + pointer.width / 2 + 15 <= W - GAUGE_WIDTH ? rightX : bx - half - pointer.width / 2 - 12;
       pointer.y = by;
       offMines();
+      // Beside the ring it may lie in the headlight's tip: moved up or down off it (clear of the ring beside it).
+      offBeam();
     }
     // Never on the seabed (under a beacon near the bed the moves above put it on the rock, dark on
     // dark): lifted in 4 px steps until its pill clears the bed under it by LABEL_BED_CLEAR px and
