@@ -1,4 +1,4 @@
-// `node scripts/submarine-pilot.mjs [--seeds=N] [--react=S] [--warn=S] [--verbose] [--legs]`: flies the
+// `node scripts/submarine-pilot.mjs [--seeds=N] [--react=S] [--warn=S] [--verbose] [--legs] [--no-level-stop] [--naive=R]`: flies the
 // submarine's courses headless (games/submarine: the course as the page lays it, beacons.ts layCourse;
 // the helm, the physics, the seabed contact and the mines) with a steady pilot on the keys, and counts
 // the mines it sets off and the time it takes. The pilot holds Ahead while the boat is slower than
@@ -17,7 +17,10 @@
 // seabed hits, the beacons collected (beacons.ts catchesBeacon) and missed, the time and the par
 // (mines.ts parTime), par over the pilot's time on the courses won, and the totals; --legs prints
 // each won course's legs (|dx|, |dy|, m) and time as JSON lines (mines.ts PILOT_LEG is fitted to
-// them). Takes about a minute.
+// them). A held Dive or Rise stops at the target's depth as on the page (level-stop.ts); --no-level-stop
+// leaves that out. --naive=R: the pilot watches the hull, not the order: it presses Dive or Rise while
+// the boat is stopped more than 3 m off the target's depth and lets go R s after it sees the hull level
+// with the beacon (within 1.5 m or past it). Takes about a minute.
 import { importSource } from './build.mjs';
 
 const args = process.argv.slice(2);
@@ -32,6 +35,8 @@ if (!(react >= 0)) throw new RangeError(`submarine-pilot: --react must be >= 0 s
 const warn = option('warn', Number.NaN);
 if (!(Number.isNaN(warn) || warn > 0)) throw new RangeError(`submarine-pilot: --warn must be > 0 s, got ${warn}`);
 const verbose = args.includes('--verbose');
+const levelStops = !args.includes('--no-level-stop');
+const naive = option('naive', -1);
 
 const sub = await importSource(
   'submarine-pilot',
@@ -39,6 +44,7 @@ const sub = await importSource(
    export * from './games/submarine/beacons.ts';
    export * from './games/submarine/mines.ts';
    export * from './games/submarine/seabed.ts';
+   export * from './games/submarine/level-stop.ts';
    export { SUBMARINE, submarine } from '@bitphysics/projects';
    export { applyImpulse, createPhysicsWorld, step } from '@bitphysics/physics';`,
 );
@@ -58,6 +64,8 @@ const {
   MINE_BLAST_IMPULSE,
   seabedInput,
   touchSeabed,
+  createLevelStop,
+  levelStop,
 } = sub;
 const { SUBMARINE, submarine, applyImpulse, createPhysicsWorld, step } = sub;
 
@@ -69,6 +77,8 @@ function fly(seed, count) {
   const mines = layMines(h.beacons, h.seabed, seed);
   const live = mines.map(() => true);
   const state = { ...createHelmState(), touching: false, spared: 0, diveStopped: false };
+  const stopState = createLevelStop();
+  const press = { beacon: -1, dir: 0, letGoAt: Number.POSITIVE_INFINITY };
   const order = courseOrder(h.beacons);
   const c = world.components,
     e = h.hull;
@@ -132,7 +142,18 @@ function fly(seed, count) {
       // On the keys: Dive or Rise held (a steady share, as the page's keys) until the depth order
       // is within 2 m of the beacon's depth.
       const err = by - state.holdY;
-      if (Math.abs(dy) > 2 && !(Math.abs(err) < 2)) {
+      if (naive >= 0) {
+        // --naive: watching the hull, not the order: a press toward the beacon's depth while the boat
+        // is stopped more than 3 m off it, let go `naive` s after the hull is seen level (within 1.5 m, or past it).
+        if (press.beacon !== b) Object.assign(press, { beacon: b, dir: 0, letGoAt: Number.POSITIVE_INFINITY });
+        if (press.dir === 0 && Math.abs(dy) > 3 && Math.abs(c.Velocity.y[e]) < 0.3)
+          Object.assign(press, { dir: Math.sign(dy), letGoAt: Number.POSITIVE_INFINITY });
+        if (press.dir !== 0 && press.letGoAt === Number.POSITIVE_INFINITY && dy * press.dir <= 1.5) press.letGoAt = t + naive;
+        if (press.dir !== 0 && t >= press.letGoAt) press.dir = 0;
+        input.rise = press.dir > 0;
+        input.dive = press.dir < 0;
+        input.heave = keyHeaveShare(0, t, c.Velocity.x[e]);
+      } else if (Math.abs(dy) > 2 && !(Math.abs(err) < 2)) {
         input.rise = dy > 0;
         input.dive = dy < 0;
         input.heave = keyHeaveShare(0, t, c.Velocity.x[e]);
@@ -142,6 +163,23 @@ function fly(seed, count) {
     // for a step, as a player presses it again once the boat has cleared the bed.
     if (state.diveStopped && !state.touching && input.dive) input.dive = false;
     const held = seabedInput(state, input);
+    // The stop at the target's depth (level-stop.ts), as the page makes it, unless --no-level-stop.
+    if (
+      levelStops &&
+      levelStop(stopState, {
+        dir: held.dive === held.rise ? 0 : held.dive ? -1 : 1,
+        now: t,
+        beacon: b,
+        beaconY: by,
+        order: state.holdY,
+        y,
+        vy: c.Velocity.y[e],
+        warned: told !== null,
+      })
+    ) {
+      state.holdY = by;
+      held.dive = held.rise = false;
+    }
     steer(world, h, held, state);
     step(world);
     const contact = touchSeabed(world, h, state, world.time, held.dive, { x: 0, y: 0 });

@@ -316,6 +316,9 @@ export function ridgeInWay(
   return crest > keel - RIDGE_CLEAR_BELOW;
 }
 
+/** The pointer's label's depth part while the boat is going to pass at the target's depth (`beaconLabel`). */
+export const LEVEL_WORDS = 'level ✓';
+
 /**
  * The pointer's label: how far ahead or behind the beacon lies (level, along the course: the hull's
  * pitch does not change the figures, so a boat nosing down or up reads the same beacon the same way)
@@ -327,12 +330,14 @@ export function ridgeInWay(
  * that way (./mines.ts `mineOnWay`) and on which side to pass it, which adds `MINE_WARNING` there
  * instead when there is no ridge; `name`: the beacon's name (`beaconName`), put first as
  * "target C: 85 m ahead" (the one beacon to steer for, held until collected), so a change of target
- * is seen; without a name the label starts "beacon".
+ * is seen; without a name the label starts "beacon"; `level`: the boat is going to pass at the
+ * beacon's depth (./level-stop.ts `levelWith`), which puts `LEVEL_WORDS` in place of the depth.
  */
-export function beaconLabel(dx: number, dy: number, ridge = false, mine: '' | 'over' | 'under' = '', name = ''): string {
+export function beaconLabel(dx: number, dy: number, ridge = false, mine: '' | 'over' | 'under' = '', name = '', level = false): string {
   const parts: string[] = [];
   if (Math.abs(dx) >= 3) parts.push(`${Math.abs(dx).toFixed(0)} m ${dx > 0 ? 'ahead' : 'behind'}`);
-  if (Math.abs(dy) >= 3) parts.push(`${Math.abs(dy).toFixed(0)} m ${dy < 0 ? 'down' : 'up'}`);
+  if (level) parts.push(LEVEL_WORDS);
+  else if (Math.abs(dy) >= 3) parts.push(`${Math.abs(dy).toFixed(0)} m ${dy < 0 ? 'down' : 'up'}`);
   const warning = ridge ? RIDGE_WARNING : mine ? MINE_WARNING[mine] : '';
   return `${name ? `target ${name}: ` : 'beacon '}${parts.length > 0 ? parts.join(', ') : 'here'}${warning ? `\n${warning}` : ''}`;
 }

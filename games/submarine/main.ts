@@ -3,7 +3,10 @@
  * ordered (a dashed line by the hull and a cyan mark on the depth gauge, with figures, at the scene's right edge)
  * runs down or up at once, the vertical thrusters and (under way) the dive planes push at once and the
  * vents flood or blow the ballast tanks; let go and the boat stops on the ordered depth and holds it
- * (./helm.ts, ./planes.ts), a depth ladder behind the stern sliding past it meanwhile. Hold Nose down
+ * (./helm.ts, ./planes.ts), a depth ladder behind the stern sliding past it meanwhile. A held Dive
+ * or Rise stops level with the target beacon a moment (./level-stop.ts), and a dashed line at the
+ * target's depth runs from its ring back past the hull, green while the boat will pass through the
+ * ring (the label then reads "level ✓"). Hold Nose down
  * or up to pitch, and drive the screw ahead or astern (let go, the boat glides about a hull's length
  * and stops). A trail of glowing plankton leads from beacon to beacon round the mines (./trail.ts):
  * each glow caught scores, more for a streak of them (a first-time hint over the scene says how much). The hull floats by Archimedes (its submerged part of a 12 m x 3 m box), drags in proportion
@@ -57,6 +60,7 @@ import {
 import { drawBoat, HEADLIGHT, inHeadlight } from './boat-drawing';
 import { CURRENT_NOTE_LIFE, CURRENT_NOTE_SPEED, currentAt, currentMark, currentNote, drawCurrent, driftInCurrent } from './current';
 import { coastDistance, createHelmState, HELM, type HelmInput, keyHeaveShare, NO_INPUT, steer } from './helm';
+import { createLevelStop, LEVEL_BAND, levelStop, levelWith } from './level-stop';
 import { bestTimes, LEVELS, levelCourse, MAX_BEACONS, MAX_BEST_TIME } from './levels';
 import {
   hullDistance,
@@ -400,6 +404,7 @@ function createWorld(): PhysicsWorld {
   hitMarks.length = 0;
   heaveTiming.reset();
   driveTiming.reset();
+  Object.assign(levelHold, createLevelStop());
   scrapeAt = Number.NaN;
   pickups.length = 0;
   return world;
@@ -427,6 +432,8 @@ const stickInput = { x: 0, y: 0, held: false };
 let pausedNow = (): boolean => false;
 /** Dive or Rise pressed and let go, timed by the events' timestamps (./release.ts): a let-go holds the order of its moment. */
 const heaveTiming = createHeaveTiming();
+/** The stop at the target's depth on a held Dive or Rise (./level-stop.ts). */
+const levelHold = createLevelStop();
 /** Ahead or Astern, timed by the events' timestamps (./release.ts): a press acts for as long as it was held, even inside a stalled frame. */
 const driveTiming = createPressTiming();
 /** The share of Dive / Rise the press asked for on its last step held (a let-go press runs on at it). */
@@ -511,7 +518,8 @@ function heldInput(now: number, drive: -1 | 0 | 1): HelmInput {
 }
 
 /**
- * Whether any of 15 points of the screen box `box` (left, top, width, height, px) lies in the
+ * Whether any of a grid of points of the screen box `box` (left, top, width, height, px; at most 8
+ * px apart) lies in the
  * headlight's cone (./boat-drawing.ts inHeadlight) of the hull at `hull` (x, y, m, and its angle,
  * rad), drawn by `sx`, `sy` (world m to screen px) at `k` px/m.
  */
@@ -526,10 +534,14 @@ function boxInBeam(
     [hx = 0, hy = 0, angle = 0] = hull;
   const hc = Math.cos(angle),
     hs = Math.sin(angle);
-  for (let i = 0; i <= 4; i++)
-    for (let j = 0; j <= 2; j++) {
-      const wx = hx + (left + (width * i) / 4 - sx(hx)) / k,
-        wy = hy - (top + (height * j) / 2 - sy(hy)) / k;
+  // At most 8 px apart (in eighths of the width, halves of the height at least): the cone's edge
+  // crosses a long label between points further apart, and its tip fits between them.
+  const cols = 8 * Math.max(1, Math.ceil(width / 64)),
+    rows = 2 * Math.max(1, Math.ceil(height / 16));
+  for (let i = 0; i <= cols; i++)
+    for (let j = 0; j <= rows; j++) {
+      const wx = hx + (left + (width * i) / cols - sx(hx)) / k,
+        wy = hy - (top + (height * j) / rows - sy(hy)) / k;
       if (inHeadlight((wx - hx) * hc + (wy - hy) * hs, -(wx - hx) * hs + (wy - hy) * hc, SUBMARINE.length)) return true;
     }
   return false;
@@ -573,10 +585,29 @@ function stepWorld(world: PhysicsWorld): void {
   else if (asked.dive !== asked.rise) lastHeave = asked.heave ?? 1;
   if (drive !== 0 && driveAsked() === 0) asked.drive = lastDrive;
   else if (drive !== 0) lastDrive = asked.drive ?? 1;
-  const input = state.over ? NO_INPUT : seabedInput(state, asked);
+  let input = state.over ? NO_INPUT : seabedInput(state, asked);
   asternHeld = input.astern && !input.ahead;
   if (!Number.isNaN(timed.letGoAt) && (state.mode === 'diving' || state.mode === 'rising'))
     state.holdY = releasedOrder(state.holdY, heaveTiming.orderAt(timed.letGoAt), state.mode);
+  // The target's depth stops a held Dive or Rise (./level-stop.ts): the boat holds level with the
+  // beacon a moment, so a player who lets go on seeing it there stops on it.
+  const c0 = world.components,
+    hull = handles.hull;
+  if (
+    levelStop(levelHold, {
+      dir: input.dive === input.rise ? 0 : input.dive ? -1 : 1,
+      now: world.time,
+      beacon: aim.index,
+      beaconY: aim.index >= 0 ? handles.beacons[2 * aim.index + 1]! : Number.NaN,
+      order: state.holdY,
+      y: c0.Position.y[hull]!,
+      vy: c0.Velocity.y[hull]!,
+      warned: ahead !== null || bedWarn !== null,
+    })
+  ) {
+    state.holdY = handles.beacons[2 * aim.index + 1]!;
+    input = { ...input, dive: false, rise: false };
+  }
   const vertical = input.dive === input.rise ? 0 : input.dive ? -1 : 1;
   if (vertical !== 0 && vertical !== lastVertical) sound.launch(0.25);
   lastVertical = vertical;
@@ -2157,6 +2188,50 @@ function spawnBubbles(world: PhysicsWorld, angle: number): void {
   if (bubbles.length > 400) bubbles.splice(0, bubbles.length - 400);
 }
 
+/** The colour of "level with the target": its guide line and brackets (./level-stop.ts levelWith). */
+const LEVEL_COLOR = 0x6dff9e;
+/**
+ * Where the boat will pass to the target beacon's depth, as last drawn (./level-stop.ts levelWith):
+ * the target (-1: none), its side (0 level, 1 over, -1 under) and the metres to the band's edge.
+ */
+const aimLevel = { index: -1, side: 1 as -1 | 0 | 1, off: Number.NaN };
+
+/**
+ * The target's depth carried to the boat: a dashed line at the beacon's depth from its ring back past
+ * the hull's stern (clipped to the scene left of the depth gauge), yellow, in a faint lane as high as
+ * the depths that pass through its ring (./level-stop.ts LEVEL_BAND); green while the boat is going
+ * to pass level with it (`aimLevel`). So the player sees at the hull, not across the screen, whether
+ * the depth line (the boat's order) will take it through the ring.
+ */
+function drawLevelGuide(sx: (x: number) => number, sy: (y: number) => number, W: number, hxw: number): void {
+  levelGuide.shown = false;
+  if (aim.index < 0 || state.over) return;
+  const wx = handles.beacons[2 * aim.index]!,
+    wy = handles.beacons[2 * aim.index + 1]!;
+  const L = SUBMARINE.length,
+    dir = wx >= hxw ? 1 : -1;
+  // From the hull's far side to the ring's near edge, within the scene.
+  const x0 = Math.max(0, Math.min(sx(hxw - dir * L), sx(wx - dir * BEACON_CATCH))),
+    x1 = Math.min(W - GAUGE_WIDTH, Math.max(sx(hxw - dir * L), sx(wx - dir * BEACON_CATCH)));
+  const y = sy(wy);
+  if (x1 - x0 < 4 || y < 0 || y > app.screen.height) return;
+  const level = aimLevel.side === 0,
+    color = level ? LEVEL_COLOR : 0xffe066;
+  // The lane to the ring: the depths from which the ring is reached going straight on.
+  const top = sy(wy + LEVEL_BAND),
+    bottom = sy(wy - LEVEL_BAND);
+  g.rect(x0, top, x1 - x0, bottom - top).fill({ color, alpha: level ? 0.09 : 0.05 });
+  const dash = Math.max(6, 1.4 * zoom),
+    gap = Math.max(5, zoom);
+  for (let x = x0; x < x1; x += dash + gap)
+    g.moveTo(x, y)
+      .lineTo(Math.min(x1, x + dash), y)
+      .stroke({ color, width: 2, alpha: level ? 0.8 : 0.55 });
+  Object.assign(levelGuide, { shown: true, y, from: x0, to: x1, level });
+}
+/** The level guide as last drawn (drawLevelGuide): whether shown, its height and ends on the screen (px), and whether green. */
+const levelGuide = { shown: false, y: 0, from: 0, to: 0, level: false };
+
 function draw(): void {
   drawMouseStick();
   const world = shell.world,
@@ -2170,6 +2245,12 @@ function draw(): void {
   aim.index = chooseBeacon(handles.beacons, taken, hxw, hyw, aim.index, -1, goingX());
   // A new target (the last one collected): its label pulses (drawBeacons).
   if (before >= 0 && aim.index >= 0 && aim.index !== before) aimSwitchedAt = world.time;
+  // Where the boat will pass to the target's depth (./level-stop.ts): level with it, over or under.
+  const wasLevel = aimLevel.side === 0 && aimLevel.index === aim.index;
+  Object.assign(aimLevel, { index: aim.index, side: 1, off: Number.NaN });
+  if (aim.index >= 0) Object.assign(aimLevel, levelWith(state.holdY, hyw, handles.beacons[2 * aim.index + 1]!));
+  // Coming level with it: a short high tick.
+  if (aimLevel.side === 0 && !wasLevel && aim.index >= 0 && !state.over) sound.chime(1760, 0.08);
   // The camera frames the hull and the beacon the pointer leads to: it centres between them and
   // zooms out (down to FRAME_MIN_ZOOM px/m) until both fit inside FRAME_MARGIN px of the edges, so
   // the player sees where to go instead of steering by an arrow to a point off screen.
@@ -2422,7 +2503,7 @@ function draw(): void {
       ] as const)
         for (const [width, color] of [
           [5, 0x06213a],
-          [2.5, 0xffe066],
+          [2.5, aimLevel.side === 0 ? LEVEL_COLOR : 0xffe066],
         ] as const)
           g.moveTo(bx + ux * r, by + uy * (r - arm))
             .lineTo(bx + ux * r, by + uy * r)
@@ -2521,7 +2602,10 @@ function draw(): void {
     wayMine = onWay ? onWay.index : -1;
     // A mine on the way is ringed where it is, and a mine on the boat's course is told by the hull
     // (drawMineWarning), where the player looks: the pointer at the screen's edge tells only the ridge.
-    pointer.text = beaconLabel(wx - hxw, wy - hyw, ridge, '', beaconName(aim.index));
+    // "level ✓" for the depth while the boat is going to pass level with the target and the hull is
+    // already within its band; further off, the metres still to go.
+    const level = aimLevel.side === 0 && Math.abs(wy - hyw) <= LEVEL_BAND;
+    pointer.text = beaconLabel(wx - hxw, wy - hyw, ridge, '', beaconName(aim.index), level);
     // Heading for the finish with beacons skipped: collecting it ends the run, so the label says
     // which are still to fetch (backing to them first keeps every beacon in reach).
     const behind = taken.flatMap((t, i) => (t || i === aim.index ? [] : [beaconName(i)]));
@@ -2680,7 +2764,8 @@ function draw(): void {
     // label over the lit water ahead of the bow) moves up or down, away from the cone's axis, until
     // none of its points is in the cone.
     aim.beam = false;
-    if (hyw < -HEADLIGHT.fromDepth) {
+    const offBeam = () => {
+      if (hyw >= -HEADLIGHT.fromDepth) return;
       const ha = c.Angle.value[e]!;
       // The label's pill: its text and 7 px, 2 px of padding round it.
       const lit = () =>
@@ -2704,7 +2789,8 @@ function draw(): void {
           for (let n = 0; n < 60 && lit(); n++) pointer.y += dir * 4;
         }
       }
-    }
+    };
+    offBeam();
     // Clear of the live mines in view: a label across one (on a phone the label of a beacon behind
     // spans most of the width at the boat's depth, over the mines ahead) moves past it, away from the hull.
     const offMines = () => {
@@ -2745,6 +2831,8 @@ function draw(): void {
       pointer.x = rightX + pointer.width / 2 + 15 <= W - GAUGE_WIDTH ? rightX : bx - half - pointer.width / 2 - 12;
       pointer.y = by;
       offMines();
+      // Beside the ring it may lie in the headlight's tip: moved up or down off it (clear of the ring beside it).
+      offBeam();
     }
     // Never on the seabed (under a beacon near the bed the moves above put it on the rock, dark on
     // dark): lifted in 4 px steps until its pill clears the bed under it by LABEL_BED_CLEAR px and
@@ -2801,6 +2889,7 @@ function draw(): void {
         alpha: (1 - since / AIM_PULSE) * (0.6 + 0.4 * Math.cos(4 * Math.PI * since)),
       });
   }
+  drawLevelGuide(sx, sy, W, hxw);
   // The boat (./boat-drawing.ts), turned by the hull's angle; the screw's blades turn with the throttle.
   const a = c.Angle.value[e]!,
     co = Math.cos(a),
@@ -2983,6 +3072,12 @@ shell.expose({
   beaconPointer: () => ({ ...aim, visible: pointer.visible, text: pointer.text, zoom, otherTags, brakeHints: brakeHint.shown }),
   /** The first-time hint of the glows' worth: its words and whether it shows. */
   glowHint: () => ({ text: glowNote.textContent ?? '', visible: glowNote.style.display !== 'none' }),
+  /**
+   * The target's depth by the boat as last drawn (./level-stop.ts): the line's place (px), whether the
+   * boat is going to pass level with it (0), over (1) or under (-1) it, and whether the stop at its
+   * depth holds a Dive or Rise now.
+   */
+  levelGuide: () => ({ ...levelGuide, side: aimLevel.side, stopping: !Number.isNaN(levelHold.since) && !levelHold.done }),
   /** The depth ladder by the boat as last drawn: its opacity in [0, 1] and the figures shown ("30 m"). */
   depthLadder: () => ({ alpha: ladder.alpha, marks: ladderMarks.filter((m) => m.visible).map((m) => m.text) }),
   /** The words over the scene as last drawn, kept off each other: each shown one's name and box (x, y, width, height, px). */

@@ -366,7 +366,8 @@ async function diveOnPhone(g: GamePage): Promise<void> {
   await g.frames(8);
   const aim = await g.page.evaluate(() => (window.game as unknown as Pointer).beaconPointer());
   expect(aim.visible).toBe(true);
-  expect(aim.text).toMatch(/^(beacon |target [A-Z]: )(\d+ m (ahead|behind)(, \d+ m (down|up))?|\d+ m (down|up)|here)$/);
+  // (Level with the beacon, games/submarine/level-stop.ts, the depth reads "level ✓".)
+  expect(aim.text).toMatch(/^(beacon |target [A-Z]: )(\d+ m (ahead|behind)(, (\d+ m (down|up)|level ✓))?|\d+ m (down|up)|level ✓|here)$/);
   // The label is kept off the hull (it was drawn across it on a phone): with the boat put 10 m
   // above its beacon, the label over the beacon would cross the hull.
   const clear = await g.page.evaluate(async () => {
@@ -1358,18 +1359,18 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
     for (let i = 1; i <= 3; i++) {
       const p = await at(30, 8);
       expect(p.index).toBe(0);
-      const m = /^target A: 30 m ahead\nlet go at (\d+) m ahead$/.exec(p.text);
+      const m = /^target A: 30 m ahead, level ✓\nlet go at (\d+) m ahead$/.exec(p.text);
       expect(m, p.text).not.toBeNull();
       expect(Number(m![1])).toBeGreaterThan(10);
       expect(Number(m![1])).toBeLessThan(16);
       expect(p.brakeHints).toBe(2 * i - 1);
-      expect((await at(30, 2)).text).toBe('target A: 30 m ahead');
-      expect((await at(12, 8)).text).toBe('target A: 12 m ahead\nlet go now');
-      expect((await at(12, 2)).text).toBe('target A: 12 m ahead');
+      expect((await at(30, 2)).text).toBe('target A: 30 m ahead, level ✓');
+      expect((await at(12, 8)).text).toBe('target A: 12 m ahead, level ✓\nlet go now');
+      expect((await at(12, 2)).text).toBe('target A: 12 m ahead, level ✓');
     }
     // A seventh time in: no more.
     const p = await at(30, 8);
-    expect(p.text).toBe('target A: 30 m ahead');
+    expect(p.text).toBe('target A: 30 m ahead, level ✓');
     expect(p.brakeHints).toBe(6);
     expect(g.errors).toEqual([]);
   }, 180_000);
@@ -1667,7 +1668,8 @@ describe.each(SIZES)('submarine helm and framing ($device)', ({ device, viewport
     // hull went, m. The page asks the helm for the same share of the dive speed from both at the rim
     // (helm.ts keyHeaveShare; the stick asked for all of it, 1.6 times the key's depth a second).
     const g = await fresh(1);
-    await g.waitFor(() => (window.game as unknown as Sub).world.time > 0.2, null, 60_000);
+    // 0.2 s of game time run at once (GamePage.runFrames), not waited for on the page's own frames.
+    await g.runFrames(12);
     const dive = async (how: 'key' | 'rim' | 'half'): Promise<number> => {
       await g.page.evaluate(() => {
         const w = window.game as unknown as Helm;
@@ -1698,15 +1700,74 @@ describe.each(SIZES)('submarine helm and framing ($device)', ({ device, viewport
     expect(half).toBeGreaterThan(1);
     expect(half).toBeLessThan(0.85 * key);
     // The gauge's tags say whose depth each is: the boat's ("you 12 m") and the beacon's ("beacon A 27 m").
-    await g.page.evaluate(() => {
-      (window.game as unknown as Helm).paused = false;
-    });
-    const tags = await g.waitFor(() => {
+    // Frames run at once until they are drawn (GamePage.runUntil: the paused game unpaused for them).
+    const tags = await g.runUntil(() => {
       const t = (window.game as unknown as Helm).gaugeTags();
       return t.depthText && t.targetText ? t : null;
     }, null);
     expect(tags.depthText).toMatch(/^you \d+ m$/);
     expect(tags.targetText).toMatch(/^beacon [A-Z] \d+ m$/);
+    // The target's depth stops a held Dive (games/submarine/level-stop.ts): the boat hovering 12 m
+    // over beacon A's depth, 60 m short of it, ↓ held (on a phone the stick at its rim) on and on:
+    // the boat stops within 0.6 m of the beacon's depth (level-stop.ts LEVEL_STOPPED_NEAR: the helm
+    // settles onto the order, and the stop counts from there) and is still within it 0.5 s later
+    // (LEVEL_STOP_HOLD is 0.8 s), the label reads "level ✓" and the guide is green; held on, it goes
+    // on down past it (3 m under within 5 s). Steps without drawing (one drawn frame chooses the
+    // target, one draws the label), so the case costs little.
+    type Level = Helm & { levelGuide(): { level: boolean; stopping: boolean }; beaconPointer(): { text: string } };
+    await g.page.evaluate(() => {
+      const w = window.game as unknown as Level;
+      w.paused = true;
+      w.reset();
+      const c = w.world.components as Level['world']['components'] & { Ballast: { fore: Float64Array; aft: Float64Array } },
+        e = w.hull(),
+        b = w.handles().beacons;
+      c.Position.x[e] = b[0]! - 60;
+      c.Position.y[e] = b[1]! + 12;
+      c.Velocity.x[e] = c.Velocity.y[e] = 0;
+      c.Ballast.fore[e] = c.Ballast.aft[e] = 0.7675;
+      Object.assign(w.state, { holdY: b[1]! + 12, mode: 'holding', fill: 0.7675 });
+    });
+    await g.runFrames(1);
+    if (touch) await g.page.evaluate(() => (window.game as unknown as Helm).setStick(0, -1));
+    else await g.page.keyboard.down('ArrowDown');
+    // The hull's height over the beacon's (m), its climb (m/s), the game time and whether the stop
+    // holds: a reader put in the page for the predicates below.
+    type Read = { off: number; vy: number; t: number; stopping: boolean };
+    type Reader = { subLevel: () => Read };
+    await g.page.evaluate(() => {
+      (window as unknown as Reader).subLevel = () => {
+        const w = window.game as unknown as Level;
+        const c = w.world.components,
+          e = w.hull();
+        return {
+          off: c.Position.y[e]! - w.handles().beacons[1]!,
+          vy: c.Velocity.y[e]!,
+          t: w.world.time,
+          stopping: w.levelGuide().stopping,
+        };
+      };
+    });
+    const stopped = await g.runUntil(
+      () => {
+        const r = (window as unknown as Reader).subLevel();
+        return r.stopping && Math.abs(r.off) < 0.6 && Math.abs(r.vy) < 0.4 ? r : null;
+      },
+      null,
+      { draw: false, resume: false, maxSeconds: 10 },
+    );
+    await g.runUntil((t) => (window.game as unknown as Sub).world.time > t + 0.5, stopped.t, { draw: false, resume: false });
+    await g.runFrames(1);
+    const held = await g.page.evaluate(() => {
+      const w = window.game as unknown as Level;
+      return { ...(window as unknown as Reader).subLevel(), text: w.beaconPointer().text, guide: w.levelGuide().level };
+    });
+    expect(Math.abs(held.off)).toBeLessThan(0.6);
+    expect(held.text).toContain('level ✓');
+    expect(held.guide).toBe(true);
+    await g.runUntil(() => (window as unknown as Reader).subLevel().off < -3, null, { draw: false, resume: false, maxSeconds: 5 });
+    if (touch) await g.page.evaluate(() => (window.game as unknown as Helm).setStick(0, 0));
+    else await g.page.keyboard.up('ArrowDown');
     expect(g.errors).toEqual([]);
   }, 120_000);
 
