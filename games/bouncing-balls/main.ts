@@ -44,8 +44,8 @@
  * new one ringed when it moved), and the status row's score bumps. Knocks: the loudest few collisions a step (knocks.ts), so
  * a pile does not roar. When time is up, the Play-again button floats over the stand under the box's
  * floor, clear of the ramps at its top. Until a press, a ring pulses round a ball to throw
- * (markThrowable; "drag me" over it until the round's first throw). On a touch screen a pull close
- * to one that scores is drawn to it (currentThrow, hoop.ts assistPull; "on target" by the gauge).
+ * (markThrowable; "drag me" over it until the round's first throw). A pull close to one that throws
+ * through the middle of the hoop is drawn to it (currentThrow, aim-assist.ts; "on target" by the gauge).
  *
  * Looks: a court (a wall with panels over a wooden floor, the box framed in steel), wooden ramps,
  * plain coloured balls (no rotation marks, no trails unless asked for), a plain white backboard,
@@ -90,6 +90,7 @@ import {
   type WorldSnapshot,
 } from '@bitphysics/physics';
 import { Graphics, Text } from 'pixi.js';
+import { assistAim } from './aim-assist';
 import { pageStorage, readBest, writeBest } from './best';
 import {
   addHoop,
@@ -1282,8 +1283,10 @@ function endAim(): void {
  * The throw the pointer would make now: start (m), velocity (m/s) of the slingshot, and the ball's
  * radius (m) and mass (kg): from the pressed ball's centre when the press began on a ball (that ball
  * is thrown), lifted to the top of the heap over it if it is buried (liftSpot), else from the press's start spot (pressSpot: a new basketball).
- * A finger's pull (not a mouse's) within PULL_ASSIST_PX of a length that scores throws the middle of
- * that run of lengths (hoop.ts assistPull): a px of pull is about 1 % of the speed on a phone.
+ * A pull close to one that throws through the middle of the hoop (within about 10 % of its length
+ * and 5 degrees; aim-assist.ts assistAim) throws that one, a mouse's and a finger's alike; a finger's
+ * that is not, within PULL_ASSIST_PX of a length that scores, throws the middle of that run of
+ * lengths (hoop.ts assistPull).
  */
 function currentThrow(): { x: number; y: number; vx: number; vy: number; radius: number; mass: number } {
   const t = pulledThrow();
@@ -1291,29 +1294,39 @@ function currentThrow(): { x: number; y: number; vx: number; vy: number; radius:
   const pdx = lastX - startX,
     pdy = lastY - startY,
     len = Math.hypot(pdx, pdy);
-  // A finger's pull: drawn to the middle of the nearest run of pull lengths that score (hoop.ts
-  // assistPull), worked out once for each pull, as the arc and the release both ask for it.
-  if (!pressFinger || !dragged || len === 0 || len >= fullPullNow || inCancelZone() || refused()) return t;
+  if (!dragged || len === 0 || len >= fullPullNow || inCancelZone() || refused()) return t;
+  // Worked out once for each pull, as the arc and the release both ask for it.
   const key = `${startX},${startY},${lastX},${lastY},${pressBall},${hoopAt}`;
-  if (assistMemo.key !== key) {
-    const scores = (l: number): boolean => {
-      if (l > fullPullNow) return false;
-      const [vx, vy] = slingVelocity((pdx * l) / len, (pdy * l) / len, fullPullNow);
-      return scoresClean({ ...t, vx, vy }, pressBall);
-    };
-    const length = assistPull(len, scores);
-    assistMemo = { key, length, on: length !== len || scores(len) };
-  }
+  if (assistMemo.key !== key) assistMemo = { key, ...assistedPull(t, pdx, pdy) };
   if (!assistMemo.on) return t;
   assisting = true;
-  const [vx, vy] = slingVelocity((pdx * assistMemo.length) / len, (pdy * assistMemo.length) / len, fullPullNow);
+  const [vx, vy] = slingVelocity(assistMemo.x, assistMemo.y, fullPullNow);
   return { ...t, vx, vy };
 }
 
-/** Whether the last currentThrow was drawn to a basket by the finger's assist (its label says so: drawPointer). */
+/**
+ * The pull, px, that pull (pdx, pdy) of throw `t` is drawn to (currentThrow), and whether it is drawn
+ * to a basket (`on`; else the pull itself).
+ */
+function assistedPull(t: ReturnType<typeof pulledThrow>, pdx: number, pdy: number): { x: number; y: number; on: boolean } {
+  const throwAt = (px: number, py: number): boolean => {
+    if (Math.hypot(px, py) > fullPullNow) return false;
+    const [vx, vy] = slingVelocity(px, py, fullPullNow);
+    return scoresClean({ ...t, vx, vy }, pressBall);
+  };
+  const spot = hoopSpots(TALL)[hoopAt]!;
+  const aim = assistAim(pdx, pdy, t.x, t.y, spot, { gravity: handles.params.gravity, fullPull: fullPullNow, finger: pressFinger }, throwAt);
+  if (aim) return { x: aim[0], y: aim[1], on: true };
+  if (!pressFinger) return { x: pdx, y: pdy, on: false };
+  const len = Math.hypot(pdx, pdy);
+  const length = assistPull(len, (l) => throwAt((pdx * l) / len, (pdy * l) / len));
+  return { x: (pdx * length) / len, y: (pdy * length) / len, on: length !== len || throwAt(pdx, pdy) };
+}
+
+/** Whether the last currentThrow was drawn to a basket by the aim assist (its label says so: drawPointer). */
 let assisting = false;
-/** The current finger pull's assisted length, px, for the pull and press in `key`, and whether it is on a basket (`on`). */
-let assistMemo = { key: '', length: 0, on: false };
+/** The current pull's assisted pull, px (x, y), for the pull and press in `key`, and whether it is on a basket (`on`). */
+let assistMemo = { key: '', x: 0, y: 0, on: false };
 
 /**
  * Whether throw `t` of ball `thrown` (0: a new basketball) goes down through the hoop's opening
