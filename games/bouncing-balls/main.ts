@@ -220,6 +220,8 @@ const HIGH_COLOR = 0x9aa4b5;
 /** The aiming dots of a throw from above the rim's line: lighter than HIGH_COLOR, to stand out on the wall. */
 const HIGH_AIM_COLOR = 0xe6ebf3;
 const GOLD_COLOR = 0xffd23f;
+/** The aiming arc's dots when the aim assist has drawn the throw onto a basket (currentThrow): a bright green, clear of the orange and grey dots. */
+const ON_TARGET_COLOR = 0x5cf08a;
 /** The best round's points (a basket's points: ball x streak) on this court, kept across reloads (best.ts). */
 let best = readBest(pageStorage(), TALL);
 /**
@@ -2011,8 +2013,8 @@ const CUT_REACH = 0.05;
  * What ends aiming arc `path` (points, m, as aimPath) of throw `t` short, and where: 'ball' (another
  * ball in its way), 'ramp' (one of the layout's inclined walls), 'board' (the hoop's backboard, its
  * face or top: a shot that often banks in, so not a block), 'rim' (the hoop's front rim) or 'net'
- * (the hoop's net, from below or the side); null when it runs its length or ends
- * at the box. `soon`: a ball in the way within BLOCKED_SOON_M of the throw's start, met nearly head-on
+ * (the hoop's net, from below or the side); null when it runs its length, ends
+ * at the box, or goes down through the hoop's opening (from below the shot line) before it ends. `soon`: a ball in the way within BLOCKED_SOON_M of the throw's start, met nearly head-on
  * (HEAD_ON_DEG; a throw into its neighbour in the heap; releasing it throws nothing: release).
  */
 function arcCut(
@@ -2041,6 +2043,12 @@ function arcCut(
     if (distanceToSegment(ex, ey, ax, ay, bx, by) < t.radius + SEGMENT_RADIUS + CUT_REACH)
       return { kind: 'ramp', x: ex, y: ey, soon: false };
   const spot = hoopSpots(TALL)[hoopAt]!;
+  // An arc that went down through the opening first shows a basket: what it meets after (the net
+  // catching it) is no cut ("hits the net" by a basket read as a miss).
+  if (mayScore(spot, t.y)) {
+    const o = hoopOpening(spot);
+    for (let i = 1; i < n; i++) if (hoopCrossing(o, path[2 * i - 2]!, path[2 * i - 1]!, path[2 * i]!, path[2 * i + 1]!) === -1) return null;
+  }
   // hoopSegments: the backboard first, then the front rim.
   for (const [i, [ax, ay, bx, by]] of hoopSegments(spot).entries())
     if (distanceToSegment(ex, ey, ax, ay, bx, by) < t.radius + HOOP_RADIUS + CUT_REACH)
@@ -2402,12 +2410,14 @@ function drawPointer(): void {
   }
   const path = aimPath();
   const n = path.length / 2;
-  // The dots shrink and fade out along the arc (it ends short of the rim's height: arcSeconds).
+  // The dots shrink and fade out along the arc (it ends short of the rim's height: arcSeconds); green
+  // when the aim assist has drawn the throw onto a basket (as the label's "on target").
+  const dotColor = assisting ? ON_TARGET_COLOR : thrownColor;
   for (let i = 1; i < n; i++) {
     const f = i / n;
     overlay
       .circle(cam.toScreenX(path[2 * i]!), cam.toScreenY(path[2 * i + 1]!), Math.max(3, 0.32 * r * (1 - 0.45 * f)))
-      .fill({ color: thrownColor, alpha: 1 - 0.75 * f })
+      .fill({ color: dotColor, alpha: 1 - 0.75 * f })
       .stroke({ width: 1.5, color: 0x0b0f16, alpha: 0.8 - 0.6 * f });
   }
   if (pressBall !== 0 && handles.balls.includes(pressBall)) {
