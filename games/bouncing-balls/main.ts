@@ -131,6 +131,7 @@ import {
 } from './hoop';
 import { createKnockLimiter, KNOCK_LIMITS } from './knocks';
 import { drawFloor, drawGlint, drawShadow, drawWall, shadeBallTexture } from './looks';
+import { ringInside } from './pull-fit';
 import {
   applyDrag,
   applyGravity,
@@ -2397,14 +2398,16 @@ function drawPointer(): void {
   // On a touch screen the thumb covers the ball and its gauge in a pull straight down: a ring round
   // the finger, wider than a thumb's contact, repeats the gauge where the eye is (dark track, the
   // power filling clockwise from the top).
+  // Kept inside the canvas (ringInside): a finger by the screen's edge put half of it off screen.
   if (TOUCH_UI) {
     const fr = FINGER_RING_PX;
-    overlay.circle(lastX, lastY, fr).stroke({ width: 7, color: 0x0b0f16, alpha: 0.5 });
+    const [rx, ry] = ringInside(lastX, lastY, fr + 4, app.screen.width, app.screen.height);
+    overlay.circle(rx, ry, fr).stroke({ width: 7, color: 0x0b0f16, alpha: 0.5 });
     const steps = Math.max(1, Math.ceil(48 * power));
-    overlay.moveTo(lastX, lastY - fr);
+    overlay.moveTo(rx, ry - fr);
     for (let j = 1; j <= steps; j++) {
       const a = -Math.PI / 2 + (2 * Math.PI * power * j) / steps;
-      overlay.lineTo(lastX + fr * Math.cos(a), lastY + fr * Math.sin(a));
+      overlay.lineTo(rx + fr * Math.cos(a), ry + fr * Math.sin(a));
     }
     overlay.stroke({ width: 4, color: powerColor(power), alpha: 0.95 });
   }
