@@ -1637,12 +1637,12 @@ describe('bouncing balls: the hoop game', () => {
       await touch('touchMove', at.x, at.y + 30);
       await g.frames(1);
       const full = await g.page.evaluate(() => (window.game as unknown as { fullPull(): number }).fullPull());
-      // Every pull from the ball down and away from the hoop (30 to 85 degrees under level, every 2 px
-      // of length) whose end stays on the screen (1 px inside its edges), with its throw's velocity
-      // (hoop.ts slingSpeed of the length over the full pull).
+      // Every pull from the ball down and away from the hoop (85 to 30 degrees under level, steepest
+      // first, as the clean baskets are; every 2 px of length) whose end stays on the screen (1 px
+      // inside its edges), with its throw's velocity (hoop.ts slingSpeed of the length over the full pull).
       const away = Math.sign(where.x - 0.5 * (where.hoop.minX + where.hoop.maxX)) || -1;
       const pulls: number[][] = [];
-      for (let a = 30; a <= 85; a += 5)
+      for (let a = 85; a >= 30; a -= 5)
         for (let l = 20; ; l += 2) {
           const dx = away * l * Math.cos((a * Math.PI) / 180),
             dy = l * Math.sin((a * Math.PI) / 180);
