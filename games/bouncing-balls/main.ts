@@ -44,8 +44,8 @@
  * new one ringed when it moved), and the status row's score bumps. Knocks: the loudest few collisions a step (knocks.ts), so
  * a pile does not roar. When time is up, the Play-again button floats over the stand under the box's
  * floor, clear of the ramps at its top. Until a press, a ring pulses round a ball to throw
- * (markThrowable; "drag me" over it until the round's first throw). On a touch screen a pull close
- * to one that scores is drawn to it (currentThrow, hoop.ts assistPull; "on target" by the gauge).
+ * (markThrowable; "drag me" over it until the round's first throw). A pull close to one that throws
+ * through the middle of the hoop is drawn to it (currentThrow, aim-assist.ts; "on target" by the gauge).
  *
  * Looks: a court (a wall with panels over a wooden floor, the box framed in steel), wooden ramps,
  * plain coloured balls (no rotation marks, no trails unless asked for), a plain white backboard,
@@ -90,6 +90,7 @@ import {
   type WorldSnapshot,
 } from '@bitphysics/physics';
 import { Graphics, Text } from 'pixi.js';
+import { assistAim } from './aim-assist';
 import { pageStorage, readBest, writeBest } from './best';
 import {
   addHoop,
@@ -130,6 +131,7 @@ import {
 } from './hoop';
 import { createKnockLimiter, KNOCK_LIMITS } from './knocks';
 import { drawFloor, drawGlint, drawShadow, drawWall, shadeBallTexture } from './looks';
+import { ringInside } from './pull-fit';
 import {
   applyDrag,
   applyGravity,
@@ -219,6 +221,8 @@ const HIGH_COLOR = 0x9aa4b5;
 /** The aiming dots of a throw from above the rim's line: lighter than HIGH_COLOR, to stand out on the wall. */
 const HIGH_AIM_COLOR = 0xe6ebf3;
 const GOLD_COLOR = 0xffd23f;
+/** The aiming arc's dots when the aim assist has drawn the throw onto a basket (currentThrow): a bright green, clear of the orange and grey dots. */
+const ON_TARGET_COLOR = 0x5cf08a;
 /** The best round's points (a basket's points: ball x streak) on this court, kept across reloads (best.ts). */
 let best = readBest(pageStorage(), TALL);
 /**
@@ -1282,8 +1286,10 @@ function endAim(): void {
  * The throw the pointer would make now: start (m), velocity (m/s) of the slingshot, and the ball's
  * radius (m) and mass (kg): from the pressed ball's centre when the press began on a ball (that ball
  * is thrown), lifted to the top of the heap over it if it is buried (liftSpot), else from the press's start spot (pressSpot: a new basketball).
- * A finger's pull (not a mouse's) within PULL_ASSIST_PX of a length that scores throws the middle of
- * that run of lengths (hoop.ts assistPull): a px of pull is about 1 % of the speed on a phone.
+ * A pull close to one that throws through the middle of the hoop (within about 10 % of its length
+ * and 5 degrees; aim-assist.ts assistAim) throws that one, a mouse's and a finger's alike; a finger's
+ * that is not, within PULL_ASSIST_PX of a length that scores, throws the middle of that run of
+ * lengths (hoop.ts assistPull).
  */
 function currentThrow(): { x: number; y: number; vx: number; vy: number; radius: number; mass: number } {
   const t = pulledThrow();
@@ -1291,29 +1297,39 @@ function currentThrow(): { x: number; y: number; vx: number; vy: number; radius:
   const pdx = lastX - startX,
     pdy = lastY - startY,
     len = Math.hypot(pdx, pdy);
-  // A finger's pull: drawn to the middle of the nearest run of pull lengths that score (hoop.ts
-  // assistPull), worked out once for each pull, as the arc and the release both ask for it.
-  if (!pressFinger || !dragged || len === 0 || len >= fullPullNow || inCancelZone() || refused()) return t;
+  if (!dragged || len === 0 || len >= fullPullNow || inCancelZone() || refused()) return t;
+  // Worked out once for each pull, as the arc and the release both ask for it.
   const key = `${startX},${startY},${lastX},${lastY},${pressBall},${hoopAt}`;
-  if (assistMemo.key !== key) {
-    const scores = (l: number): boolean => {
-      if (l > fullPullNow) return false;
-      const [vx, vy] = slingVelocity((pdx * l) / len, (pdy * l) / len, fullPullNow);
-      return scoresClean({ ...t, vx, vy }, pressBall);
-    };
-    const length = assistPull(len, scores);
-    assistMemo = { key, length, on: length !== len || scores(len) };
-  }
+  if (assistMemo.key !== key) assistMemo = { key, ...assistedPull(t, pdx, pdy) };
   if (!assistMemo.on) return t;
   assisting = true;
-  const [vx, vy] = slingVelocity((pdx * assistMemo.length) / len, (pdy * assistMemo.length) / len, fullPullNow);
+  const [vx, vy] = slingVelocity(assistMemo.x, assistMemo.y, fullPullNow);
   return { ...t, vx, vy };
 }
 
-/** Whether the last currentThrow was drawn to a basket by the finger's assist (its label says so: drawPointer). */
+/**
+ * The pull, px, that pull (pdx, pdy) of throw `t` is drawn to (currentThrow), and whether it is drawn
+ * to a basket (`on`; else the pull itself).
+ */
+function assistedPull(t: ReturnType<typeof pulledThrow>, pdx: number, pdy: number): { x: number; y: number; on: boolean } {
+  const throwAt = (px: number, py: number): boolean => {
+    if (Math.hypot(px, py) > fullPullNow) return false;
+    const [vx, vy] = slingVelocity(px, py, fullPullNow);
+    return scoresClean({ ...t, vx, vy }, pressBall);
+  };
+  const spot = hoopSpots(TALL)[hoopAt]!;
+  const aim = assistAim(pdx, pdy, t.x, t.y, spot, { gravity: handles.params.gravity, fullPull: fullPullNow, finger: pressFinger }, throwAt);
+  if (aim) return { x: aim[0], y: aim[1], on: true };
+  if (!pressFinger) return { x: pdx, y: pdy, on: false };
+  const len = Math.hypot(pdx, pdy);
+  const length = assistPull(len, (l) => throwAt((pdx * l) / len, (pdy * l) / len));
+  return { x: (pdx * length) / len, y: (pdy * length) / len, on: length !== len || throwAt(pdx, pdy) };
+}
+
+/** Whether the last currentThrow was drawn to a basket by the aim assist (its label says so: drawPointer). */
 let assisting = false;
-/** The current finger pull's assisted length, px, for the pull and press in `key`, and whether it is on a basket (`on`). */
-let assistMemo = { key: '', length: 0, on: false };
+/** The current pull's assisted pull, px (x, y), for the pull and press in `key`, and whether it is on a basket (`on`). */
+let assistMemo = { key: '', x: 0, y: 0, on: false };
 
 /**
  * Whether throw `t` of ball `thrown` (0: a new basketball) goes down through the hoop's opening
@@ -1998,8 +2014,8 @@ const CUT_REACH = 0.05;
  * What ends aiming arc `path` (points, m, as aimPath) of throw `t` short, and where: 'ball' (another
  * ball in its way), 'ramp' (one of the layout's inclined walls), 'board' (the hoop's backboard, its
  * face or top: a shot that often banks in, so not a block), 'rim' (the hoop's front rim) or 'net'
- * (the hoop's net, from below or the side); null when it runs its length or ends
- * at the box. `soon`: a ball in the way within BLOCKED_SOON_M of the throw's start, met nearly head-on
+ * (the hoop's net, from below or the side); null when it runs its length, ends
+ * at the box, or goes down through the hoop's opening (from below the shot line) before it ends. `soon`: a ball in the way within BLOCKED_SOON_M of the throw's start, met nearly head-on
  * (HEAD_ON_DEG; a throw into its neighbour in the heap; releasing it throws nothing: release).
  */
 function arcCut(
@@ -2028,6 +2044,12 @@ function arcCut(
     if (distanceToSegment(ex, ey, ax, ay, bx, by) < t.radius + SEGMENT_RADIUS + CUT_REACH)
       return { kind: 'ramp', x: ex, y: ey, soon: false };
   const spot = hoopSpots(TALL)[hoopAt]!;
+  // An arc that went down through the opening first shows a basket: what it meets after (the net
+  // catching it) is no cut ("hits the net" by a basket read as a miss).
+  if (mayScore(spot, t.y)) {
+    const o = hoopOpening(spot);
+    for (let i = 1; i < n; i++) if (hoopCrossing(o, path[2 * i - 2]!, path[2 * i - 1]!, path[2 * i]!, path[2 * i + 1]!) === -1) return null;
+  }
   // hoopSegments: the backboard first, then the front rim.
   for (const [i, [ax, ay, bx, by]] of hoopSegments(spot).entries())
     if (distanceToSegment(ex, ey, ax, ay, bx, by) < t.radius + HOOP_RADIUS + CUT_REACH)
@@ -2376,25 +2398,29 @@ function drawPointer(): void {
   // On a touch screen the thumb covers the ball and its gauge in a pull straight down: a ring round
   // the finger, wider than a thumb's contact, repeats the gauge where the eye is (dark track, the
   // power filling clockwise from the top).
+  // Kept inside the canvas (ringInside): a finger by the screen's edge put half of it off screen.
   if (TOUCH_UI) {
     const fr = FINGER_RING_PX;
-    overlay.circle(lastX, lastY, fr).stroke({ width: 7, color: 0x0b0f16, alpha: 0.5 });
+    const [rx, ry] = ringInside(lastX, lastY, fr + 4, app.screen.width, app.screen.height);
+    overlay.circle(rx, ry, fr).stroke({ width: 7, color: 0x0b0f16, alpha: 0.5 });
     const steps = Math.max(1, Math.ceil(48 * power));
-    overlay.moveTo(lastX, lastY - fr);
+    overlay.moveTo(rx, ry - fr);
     for (let j = 1; j <= steps; j++) {
       const a = -Math.PI / 2 + (2 * Math.PI * power * j) / steps;
-      overlay.lineTo(lastX + fr * Math.cos(a), lastY + fr * Math.sin(a));
+      overlay.lineTo(rx + fr * Math.cos(a), ry + fr * Math.sin(a));
     }
     overlay.stroke({ width: 4, color: powerColor(power), alpha: 0.95 });
   }
   const path = aimPath();
   const n = path.length / 2;
-  // The dots shrink and fade out along the arc (it ends short of the rim's height: arcSeconds).
+  // The dots shrink and fade out along the arc (it ends short of the rim's height: arcSeconds); green
+  // when the aim assist has drawn the throw onto a basket (as the label's "on target").
+  const dotColor = assisting ? ON_TARGET_COLOR : thrownColor;
   for (let i = 1; i < n; i++) {
     const f = i / n;
     overlay
       .circle(cam.toScreenX(path[2 * i]!), cam.toScreenY(path[2 * i + 1]!), Math.max(3, 0.32 * r * (1 - 0.45 * f)))
-      .fill({ color: thrownColor, alpha: 1 - 0.75 * f })
+      .fill({ color: dotColor, alpha: 1 - 0.75 * f })
       .stroke({ width: 1.5, color: 0x0b0f16, alpha: 0.8 - 0.6 * f });
   }
   if (pressBall !== 0 && handles.balls.includes(pressBall)) {

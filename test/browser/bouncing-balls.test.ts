@@ -1637,12 +1637,12 @@ describe('bouncing balls: the hoop game', () => {
       await touch('touchMove', at.x, at.y + 30);
       await g.frames(1);
       const full = await g.page.evaluate(() => (window.game as unknown as { fullPull(): number }).fullPull());
-      // Every pull from the ball down and away from the hoop (30 to 85 degrees under level, every 2 px
-      // of length) whose end stays on the screen (1 px inside its edges), with its throw's velocity
-      // (hoop.ts slingSpeed of the length over the full pull).
+      // Every pull from the ball down and away from the hoop (85 to 30 degrees under level, steepest
+      // first, as the clean baskets are; every 2 px of length) whose end stays on the screen (1 px
+      // inside its edges), with its throw's velocity (hoop.ts slingSpeed of the length over the full pull).
       const away = Math.sign(where.x - 0.5 * (where.hoop.minX + where.hoop.maxX)) || -1;
       const pulls: number[][] = [];
-      for (let a = 30; a <= 85; a += 5)
+      for (let a = 85; a >= 30; a -= 5)
         for (let l = 20; ; l += 2) {
           const dx = away * l * Math.cos((a * Math.PI) / 180),
             dy = l * Math.sin((a * Math.PI) / 180);
@@ -1651,7 +1651,8 @@ describe('bouncing balls: the hoop game', () => {
           pulls.push([dx, dy, (-dx / l) * s, (dy / l) * s]);
         }
       // The first whose predicted flight (the page's own, stopped by the balls in its way) goes down
-      // through the hoop's opening.
+      // through the hoop's opening before it touches anything (its steps across stay even: a touch
+      // changes them).
       const hit = await g.page.evaluate(
         ([e, pulls]) => {
           const game = window.game as unknown as Reach;
@@ -1662,6 +1663,7 @@ describe('bouncing balls: the hoop game', () => {
               for (let i = 1; i < f.length / 2; i++) {
                 const y0 = f[2 * i - 1]!,
                   y1 = f[2 * i + 1]!;
+                if (Math.abs(f[2 * i]! - f[2 * i - 2]! - (f[2]! - f[0]!)) > 1e-6) return false;
                 if (y0 >= o.y && y1 < o.y) {
                   const x = f[2 * i - 2]! + ((y0 - o.y) / (y0 - y1)) * (f[2 * i]! - f[2 * i - 2]!);
                   return x > o.minX && x < o.maxX;
@@ -1679,6 +1681,14 @@ describe('bouncing balls: the hoop game', () => {
       await touch('touchMove', at.x + hit![0]! / 2, at.y + hit![1]! / 2);
       await touch('touchMove', at.x + hit![0]!, at.y + hit![1]!);
       await g.frames(1);
+      // The aim says so: "on target" (the assist drew it to a basket's middle), and the arc, down
+      // through the opening, is not labelled as cut by the net it may then fall into ("hits the net").
+      const aim = await g.page.evaluate(() => {
+        const game = window.game as unknown as { aimLabel(): string; aimCut(): { kind: string } | null };
+        return { label: game.aimLabel(), cut: game.aimCut()?.kind ?? null };
+      });
+      expect(aim.label).toContain('on target');
+      expect(aim.cut).toBeNull();
       await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
       await cdp.detach();
       const score = await g.page.evaluate(() => {
