@@ -104,18 +104,27 @@ let game: RopeGame;
 let cuts = 0;
 /** Real time (s) at which the level was lost; NaN while playing. */
 let lostAt = Number.NaN;
+/** World time (s) at which the level was lost, and won; NaN until then. */
+let lostWorld = Number.NaN,
+  wonWorld = Number.NaN;
+/** Stars of the win's row turned gold so far, and the real time (s) the last one did. */
+let revealed = 0,
+  revealedAt = 0;
+/** Real time (s) each star of the level was caught (its pop: view.ts STAR_POP_S); NaN until caught. */
+const caughtAt = [Number.NaN, Number.NaN, Number.NaN];
 /**
  * A miss holds the scene until the player taps, clicks or presses a key, so a player looking
  * elsewhere still sees the miss before the level starts again: the scene dims to red, the
  * ball is ringed where it lies and the banner says so in large type on a dark card. The tap counts
- * once this long has passed, s (not the swipe that missed).
+ * once this long has passed, s, of real time or of the game's (not the swipe that missed).
  */
 const MISS_TAP_AFTER = 0.4;
 /** The miss banner's second line: a tap on a touch screen, a click (or Space) elsewhere. */
 const MISS_HINT = matchMedia('(pointer: coarse)').matches ? '\ntap to try again' : '\nclick or R to try again';
 /** Starts the level again at once after a miss (a tap or key during the pause); false otherwise. */
 function retryAfterMiss(): boolean {
-  if (game.outcome !== 'lost' || performance.now() / 1000 - lostAt < MISS_TAP_AFTER) return false;
+  if (game.outcome !== 'lost') return false;
+  if (performance.now() / 1000 - lostAt < MISS_TAP_AFTER && shell.world.time - lostWorld < MISS_TAP_AFTER) return false;
   shell.reset();
   return true;
 }
@@ -132,6 +141,10 @@ function createWorld(): PhysicsWorld {
   game = new RopeGame(scene);
   cuts = 0;
   lostAt = Number.NaN;
+  lostWorld = Number.NaN;
+  wonWorld = Number.NaN;
+  caughtAt.fill(Number.NaN);
+  revealed = 0;
   push = 0;
   plot?.clear();
   return scene.world;
@@ -153,18 +166,23 @@ function labStep(world: PhysicsWorld): void {
   const before = game.outcome;
   for (const i of game.update()) {
     const [x, y] = scene.level.stars[i]!;
+    caughtAt[i] = performance.now() / 1000;
     burst(x, y, 0xffd23f, 14);
     sound.chime(1175 + 220 * game.stars(), 0.3);
   }
   if (before === 'playing' && game.outcome === 'won') {
     best[params.level - 1] = Math.max(best[params.level - 1]!, game.stars());
+    wonWorld = world.time;
     sound.chime(784, 0.25);
     setTimeout(() => sound.chime(1046, 0.5), 160);
     const e = slotOf(scene.ball);
-    burst(world.components.Position.x[e]!, world.components.Position.y[e]! + 0.3, 0x7ee2a0, 24);
+    // Confetti from the basket: green, gold, coral and sky, 40 pieces.
+    for (const color of [0x7ee2a0, 0xffd23f, 0xff8a7a, 0x8ad4ff])
+      burst(world.components.Position.x[e]!, world.components.Position.y[e]! + 0.3, color, 10, 1.8);
   }
   if (before === 'playing' && game.outcome === 'lost') {
     lostAt = performance.now() / 1000;
+    lostWorld = world.time;
     misses[params.level - 1]!++;
     sound.impact(2, 'soft', { threshold: 0.1, loud: 10 });
     // A falling two-note "no".
@@ -461,12 +479,12 @@ shell.onWorldChange(() => {
   updateStatus();
 });
 
-/** Sparkles flying out from (x, y), m. */
-function burst(x: number, y: number, color: number, n: number): void {
+/** `n` sparkles of `color` flying out from (x, y), m, at 1 to 3 m/s times `speed`. */
+function burst(x: number, y: number, color: number, n: number, speed = 1): void {
   const now = performance.now() / 1000;
   for (let i = 0; i < n; i++) {
     const a = (2 * Math.PI * i) / n + Math.random() * 0.5,
-      s = 1 + Math.random() * 2;
+      s = speed * (1 + Math.random() * 2);
     sparkles.push({ x, y, vx: s * Math.cos(a), vy: s * Math.sin(a) + 1, born: now, color });
   }
 }
@@ -522,6 +540,7 @@ function showStars(x: number, y: number, got: number, of: number, alpha: number,
     star.visible = i < of;
     star.x = (i - (of - 1) / 2) * STAR_SIZE * 1.1;
     const on = i < got;
+    star.scale.set(1);
     star.style.fill = on ? 0xffd23f : 0x22324a;
     star.style.stroke = on ? { color: 0x5a3a00, width: 3 } : { color: 0xe8eef5, width: 3 };
   });
@@ -533,7 +552,7 @@ function draw(alpha: number, world: PhysicsWorld): void {
   const dt = Math.min(0.05, now - lastFrame);
   lastFrame = now;
   const cam = renderer.camera;
-  view.update(world, scene.level, scene.ropes, scene.ball, game.caught, cam, alpha, now, app.screen.width, app.screen.height);
+  view.update(world, scene.level, scene.ropes, scene.ball, game.caught, cam, alpha, now, app.screen.width, app.screen.height, caughtAt);
   overlay.clear();
   // The swipe: the last 0.25 s of the stroke, fading.
   while (slash.length > 0 && now - slash[0]!.t > 0.25) slash.shift();
@@ -776,7 +795,16 @@ function drawBanner(now: number): void {
     const s = game.stars();
     const last = params.level === LEVELS.length;
     setBanner(last ? 'All levels done!' : 'In the basket!', 0x9ff0b8, 1);
-    showStars(banner.x, starsY, s, scene.level.stars.length, 1);
+    // The stars won turn gold one at a time, each with a chime a step higher, swelling as it lands.
+    const due = Math.max(0, Math.min(s, Math.floor((shell.world.time - wonWorld - STAR_REVEAL_FIRST) / STAR_REVEAL_S) + 1));
+    if (due > revealed) {
+      revealed = due;
+      revealedAt = now;
+      sound.chime(880 * 1.26 ** (revealed - 1), 0.35);
+    }
+    showStars(banner.x, starsY, revealed, scene.level.stars.length, 1);
+    const swell = now - revealedAt;
+    if (revealed > 0 && swell < 0.25) starRow.children[revealed - 1]!.scale.set(1 + 0.7 * (1 - swell / 0.25));
     showRetry(false);
     showNext(true, last ? 'Play again ▶' : 'Next level ▶');
     placeNext(starsY + STAR_SIZE * 0.6 + 12);
@@ -821,6 +849,9 @@ function drawBanner(now: number): void {
   const t = shell.world.time;
   setBanner(`Level ${params.level}: ${scene.level.name}`, 0xffffff, t < 1 ? 1 : Math.max(0, 1 - (t - 1) * 2));
 }
+/** Seconds from the win to its first star turning gold, and between the next ones. */
+const STAR_REVEAL_FIRST = 0.25,
+  STAR_REVEAL_S = 0.3;
 /** Shows `text` in the banner in colour `color` (0xRRGGBB) at opacity `alpha` in [0, 1], in `size` px type. */
 function setBanner(text: string, color: number, alpha: number, size = 30): void {
   if (banner.text !== text) banner.text = text;

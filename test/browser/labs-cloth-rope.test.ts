@@ -900,7 +900,8 @@ for (const [device, options] of [
       expect(retry?.text).toBe('Try again ↺');
       expect(apart(retry!.box, card.card)).toBe(true);
       expect(apart(retry!.box, card.ball)).toBe(true);
-      await g.page.waitForTimeout(450); // a tap counts 0.4 s after the miss (not the swipe that missed)
+      // A tap counts 0.4 s after the miss (not the swipe that missed): 0.5 s of the game's time.
+      await g.runFrames(30);
       const mid = await toPage(g, 0, 4);
       if (device === 'phone') await g.page.touchscreen.tap(mid.x, mid.y);
       else await g.page.mouse.click(mid.x, mid.y);
@@ -1105,8 +1106,33 @@ for (const [device, options] of [
       await g.page.evaluate(() => {
         (window.game as unknown as Lab).paused = false;
       });
-      await g.runUntil(() => (window.game as unknown as RopeLab).outcome() === 'won', null, { maxFrames: 1800 });
-      // The banner and, under it, a row of the level's 3 stars, as many gold as were caught.
+      // Paused in the frame of the win, so no frame of the page's own runs on before it is read.
+      await g.runUntil(
+        () => {
+          const w = window.game as unknown as RopeLab;
+          if (w.outcome() !== 'won') return false;
+          w.paused = true;
+          return true;
+        },
+        null,
+        { maxFrames: 1800 },
+      );
+      // The banner and, under it, a row of the level's 3 stars, as many gold as were caught: they turn
+      // gold one at a time, none in the frame of the win, all within 0.85 s of the game's time.
+      const atWin = await g.page.evaluate(() => {
+        const w = window.game as unknown as RopeLab;
+        return { row: w.banner().stars, stars: w.stars() };
+      });
+      expect(atWin.stars).toBeGreaterThan(0);
+      expect(atWin.row).toEqual([0, 3]);
+      await g.runUntil(
+        () => {
+          const w = window.game as unknown as RopeLab;
+          return w.banner().stars[0] === w.stars();
+        },
+        null,
+        { maxFrames: 60 },
+      );
       await g.waitFor(() => (window.game as unknown as RopeLab).banner().text === 'In the basket!', null);
       // The status says the level is cleared without growing (on a phone it grew to 3 lines and
       // pushed the scene down): as tall as before the win.
@@ -1190,7 +1216,7 @@ for (const [device, options] of [
         w.paused = true;
         w.advance(6);
       });
-      await g.page.waitForTimeout(100);
+      await g.runFrames(1, { unpause: false });
       expect(await g.page.evaluate(() => (window.game as unknown as RopeLab).flight().path.length)).toBe(0);
       const [x0, y0] = await ropeMiddle(g, 0);
       const at0 = await toPage(g, x0 + 0.05, y0);
@@ -1208,7 +1234,7 @@ for (const [device, options] of [
         w.paused = true;
         w.advance(18);
       });
-      await g.page.waitForTimeout(100);
+      await g.runFrames(1, { unpause: false });
       expect(await g.page.evaluate(() => (window.game as unknown as RopeLab).flight().path.length)).toBe(0);
       expect(await g.page.evaluate(() => (window.game as unknown as RopeLab & { hintCaption(): string }).hintCaption())).toBe('');
       const [x, y] = await ropeMiddle(g, 0);
@@ -1221,7 +1247,7 @@ for (const [device, options] of [
       });
       await g.runUntil(() => (window.game as unknown as RopeLab).outcome() === 'lost', null, { maxFrames: 1800 });
       expect(await g.page.evaluate(() => (window.game as unknown as RopeLab).misses()[2])).toBe(1);
-      await g.page.waitForTimeout(500);
+      await g.runFrames(30);
       await g.page.keyboard.press('Space');
       await g.waitFor(() => (window.game as unknown as RopeLab).outcome() === 'playing', null);
       await g.waitFor(() => (window.game as unknown as RopeLab).flight().path.length > 4, null);
