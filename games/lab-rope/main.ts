@@ -342,7 +342,7 @@ const TAP_REACH_PX = 26;
 const SWIPE_REACH_PX = { touch: 14, other: 5 } as const;
 
 /**
- * Cuts the ropes the segment (x0, y0)-(x1, y1), m, crosses or ends within `reach` m of (cut.ts), but
+ * Cuts the ropes the segment (x0, y0)-(x1, y1), m, crosses or passes within `reach` m of (cut.ts), but
  * none in `spare` (the ropes this stroke has cut already: a stroke cuts each rope once, however
  * long it runs beside it); each rope cut is added to `spare`.
  */
@@ -436,7 +436,7 @@ canvas.addEventListener('pointermove', (e) => {
 });
 /**
  * Carries the stroke on to (x, y), m (the pointer's place now, `at` in CSS px): cuts what the
- * segment from its last place crosses (or, once it has moved 8 px, ends within its reach of),
+ * segment from its last place crosses (or, once it has moved 8 px, passes within its reach of),
  * however long the segment (a fast flick moves far between two pointer events), and draws it.
  */
 function strokeTo(x: number, y: number): void {
