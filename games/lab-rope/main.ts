@@ -31,7 +31,7 @@ import { createPlot } from '@bitphysics/game-kit/plot';
 import { addMouseJoint, isAlive, type PhysicsWorld, step as physicsStep, removeJoint, setMouseTarget, slotOf } from '@bitphysics/physics';
 import type { WorldRect } from '@bitphysics/render-pixi';
 import { Container, Graphics, Text } from 'pixi.js';
-import { cutRopes } from './cut';
+import { cutRopes, findCuts, segmentDistance } from './cut';
 import {
   BALL_DRAG,
   BALL_RADIUS,
@@ -326,9 +326,9 @@ const toWorld = (e: PointerEvent): [number, number] => {
 };
 let stroke: { x: number; y: number; sx: number; sy: number; moved: number; id: number; reach: number; cut: Set<number> } | null = null;
 /**
- * The pointer pushing the ball. A press on the ball is a push however fast it then moves: it never
- * cuts (a drag from the ball read as a flick cut the rope where it meets the ball); a swipe begun
- * off the ball cuts.
+ * The pointer pushing the ball (or pressed in the ring round it, see BALL_RING_PX). A press on the
+ * ball is a push however fast it then moves: it never cuts (a drag from the ball read as a flick cut
+ * the rope where it meets the ball); a swipe begun off the ball cuts.
  */
 const pusher = { id: -1 };
 const slash: { x: number; y: number; t: number }[] = [];
@@ -397,36 +397,78 @@ canvas.addEventListener('pointerdown', (e) => {
   const w = shell.world,
     b = slotOf(scene.ball),
     P = w.components.Position;
-  const near = Math.hypot(P.x[b]! - x, P.y[b]! - y) < BALL_RADIUS + 22 / renderer.camera.toScreenLength(1);
-  if (near && game.holding() > 0 && game.outcome === 'playing') {
+  const px = renderer.camera.toScreenLength(1);
+  // How far outside the ball the press is, CSS px.
+  const off = Math.hypot(P.x[b]! - x, P.y[b]! - y) * px - BALL_RADIUS * px;
+  const reach = e.pointerType === 'touch' ? SWIPE_REACH_PX.touch : SWIPE_REACH_PX.other;
+  if (off < BALL_RING_PX && game.holding() > 0 && game.outcome === 'playing') {
     pusher.id = e.pointerId;
-    // A push of at most 1.2 times the ball's weight: enough to swing it, not to carry it.
-    push = addMouseJoint(w, {
-      b: scene.ball,
-      anchor: [x, y],
-      target: [x, y],
-      hertz: 3,
-      dampingRatio: 0.7,
-      maxForce: 1.2 * w.components.Mass.value[b]! * Math.max(1, params.gravity),
-    });
-  } else {
-    stroke = {
-      x,
-      y,
-      sx: at.x,
-      sy: at.y,
-      moved: 0,
-      id: e.pointerId,
-      reach: e.pointerType === 'touch' ? SWIPE_REACH_PX.touch : SWIPE_REACH_PX.other,
-      cut: new Set(),
-    };
-    slash.length = 0;
-    slash.push({ x: at.x, y: at.y, t: performance.now() / 1000 });
-  }
+    // On the ball: a push at once. In the ring round it: a push unless the move crosses a rope first.
+    if (off < BALL_ON_PX) startPush(x, y);
+    else ring = { x, y, sx: at.x, sy: at.y, id: e.pointerId, reach };
+  } else startStroke(x, y, e.pointerId, reach);
   canvas.setPointerCapture(e.pointerId);
 });
+/** Starts a push of the ball from (x, y), m: a mouse joint on the ball held there, moved to the pointer. */
+function startPush(x: number, y: number): void {
+  const w = shell.world,
+    b = slotOf(scene.ball);
+  // A push of at most 1.2 times the ball's weight: enough to swing it, not to carry it.
+  push = addMouseJoint(w, {
+    b: scene.ball,
+    anchor: [x, y],
+    target: [x, y],
+    hertz: 3,
+    dampingRatio: 0.7,
+    maxForce: 1.2 * w.components.Mass.value[b]! * Math.max(1, params.gravity),
+  });
+}
+/** Starts a cutting stroke at (x, y), m (`at` the pointer in CSS px), with `reach` px. */
+function startStroke(x: number, y: number, id: number, reach: number): void {
+  stroke = { x, y, sx: at.x, sy: at.y, moved: 0, id, reach, cut: new Set() };
+  slash.length = 0;
+  slash.push({ x: at.x, y: at.y, t: performance.now() / 1000 });
+}
+/**
+ * The ring round the ball, CSS px outside its edge: a press within BALL_ON_PX of the ball is on it
+ * and pushes it, however it then moves (a drag from the ball never cuts); one from there out to
+ * BALL_RING_PX pushes it too (a finger's grab of a small ball), unless its move, not passing over
+ * the ball, crosses or passes within swipe reach of a rope that holds the ball before it has gone
+ * RING_DECIDE_PX: then it is a swipe from the press and cuts. A swipe across the rope just above the
+ * ball began in the ring and only dragged the ball.
+ */
+const BALL_ON_PX = 6,
+  BALL_RING_PX = 22,
+  RING_DECIDE_PX = 30;
+/** A press in the ring round the ball not yet a push or a stroke: where (m, and CSS px), its pointer and swipe reach (px). */
+let ring: { x: number; y: number; sx: number; sy: number; id: number; reach: number } | null = null;
 canvas.addEventListener('pointermove', (e) => {
   const [x, y] = toWorld(e);
+  if (ring && e.pointerId === ring.id) {
+    const r = ring;
+    const open = scene.ropes.filter((_, i) => isAlive(shell.world, scene.ropes[i]!.ballLink));
+    const reach = r.reach / renderer.camera.toScreenLength(1);
+    const b = slotOf(scene.ball),
+      P = shell.world.components.Position;
+    // A move over the ball itself is a push (it crosses the rope's last link under the ball).
+    const clear = segmentDistance(P.x[b]!, P.y[b]!, r.x, r.y, x, y) >= BALL_RADIUS;
+    if (clear && findCuts(shell.world, open, scene.ball, r.x, r.y, x, y, reach).length > 0) {
+      ring = null;
+      pusher.id = -1;
+      const now = { x: at.x, y: at.y };
+      at.x = r.sx;
+      at.y = r.sy;
+      startStroke(r.x, r.y, e.pointerId, r.reach);
+      at.x = now.x;
+      at.y = now.y;
+      strokeTo(x, y);
+    } else if (Math.hypot(at.x - r.sx, at.y - r.sy) >= RING_DECIDE_PX) {
+      ring = null;
+      startPush(r.x, r.y);
+      setMouseTarget(shell.world, push, [x, y]);
+    }
+    return;
+  }
   if (push && isAlive(shell.world, push) && e.pointerId === pusher.id) {
     setMouseTarget(shell.world, push, [x, y]);
     return;
@@ -457,6 +499,7 @@ const release = (e: PointerEvent): void => {
   const [x, y] = toWorld(e);
   releasePush();
   pusher.id = -1;
+  ring = null;
   if (stroke && e.pointerId === stroke.id) {
     // The last stretch, from the last move to where the pointer left: a flick may send its up event
     // far from its last move, or with no move between down and up at all.
@@ -471,6 +514,7 @@ canvas.addEventListener('pointercancel', release);
 shell.onWorldChange(() => {
   push = 0;
   stroke = null;
+  ring = null;
   sparkles.length = 0;
   // The panel's level slider and the side column follow a new level or a retry at once, so the
   // slider never shows a level the Next level button has moved on from.

@@ -970,7 +970,7 @@ for (const [device, options] of [
       expect(g.errors).toEqual([]);
     });
 
-    it('a swipe that stops just short of the rope still cuts it (14 px for a finger, 5 px for the mouse); a fast flick cuts it; a drag or flick begun on the ball pushes it and cuts nothing', async () => {
+    it('a swipe that stops just short of the rope still cuts it (14 px for a finger, 5 px for the mouse); a fast flick cuts it; a drag or flick begun on the ball pushes it and cuts nothing; a swipe begun beside the ball cuts', async () => {
       await g.page.evaluate(() => {
         const w = window.game as unknown as RopeLab & { reset(): void };
         w.reset();
@@ -1054,6 +1054,38 @@ for (const [device, options] of [
       });
       await drag(g.page, [await toPage(g, ballAt[0], ballAt[1]), await toPage(g, ballAt[0] + 1, ballAt[1])], 6);
       expect(await cutState(), `${device}: a drag from the ball`).toEqual({ cuts: 0, holding: 1 });
+      // A swipe begun in the ring round the ball (14 px out from its edge, 35 degrees off the rope
+      // beside it) across the rope just above the ball, not over the ball: a cut (it dragged the ball).
+      await g.page.evaluate(() => {
+        const w = window.game as unknown as RopeLab & { reset(): void };
+        w.reset();
+        w.paused = true;
+      });
+      const ringSwipe = await g.page.evaluate(() => {
+        const w = window.game as unknown as RopeLab;
+        const P = w.world.components.Position,
+          ids = w.ids();
+        const b = ids.ball % 2 ** 25,
+          [ax, ay] = ids.ropes[0]!.anchor as [number, number];
+        const bx = P.x[b]!,
+          by = P.y[b]!;
+        const d = Math.hypot(ax - bx, ay - by),
+          ux = (ax - bx) / d,
+          uy = (ay - by) / d;
+        const r = 0.28 + 14 / w.renderer.camera.toScreenLength(1),
+          c = Math.cos((35 * Math.PI) / 180),
+          s = Math.sin((35 * Math.PI) / 180);
+        // Start r from the centre, 35 degrees to the rope's left (n = (-uy, ux)); end as far to its
+        // right and 0.35 m on.
+        return [
+          bx + r * (c * ux - s * uy),
+          by + r * (c * uy + s * ux),
+          bx + r * c * ux + (r * s + 0.35) * uy,
+          by + r * c * uy - (r * s + 0.35) * ux,
+        ];
+      });
+      await drag(g.page, [await toPage(g, ringSwipe[0]!, ringSwipe[1]!), await toPage(g, ringSwipe[2]!, ringSwipe[3]!)], 6);
+      expect(await cutState(), `${device}: a swipe begun beside the ball`).toEqual({ cuts: 1, holding: 0 });
       expect(g.errors).toEqual([]);
     });
 
