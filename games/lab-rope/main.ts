@@ -848,7 +848,7 @@ function drawBanner(now: number): void {
     }
     showStars(banner.x, starsY, revealed, scene.level.stars.length, 1);
     const swell = now - revealedAt;
-    if (revealed > 0 && swell < 0.25) starRow.children[revealed - 1]!.scale.set(1 + 0.7 * (1 - swell / 0.25));
+    if (revealed > 0 && swell < 0.25) starRow.children[revealed - 1]!.scale.set(1 + 0.45 * (1 - swell / 0.25));
     showRetry(false);
     showNext(true, last ? 'Play again ▶' : 'Next level ▶');
     placeNext(starsY + STAR_SIZE * 0.6 + 12);
