@@ -10,7 +10,8 @@
  * up to a firm pull (enough to lift and swing the sheet, well under what tears it) the patch keeps to
  * the hand; past it the pull grows slowly with the hand's lead, as a rubber cord, so a gentle pull
  * stretches and moves the sheet, and only a deliberate hard pull, the hand led a metre or more past the
- * cloth, pulls hard enough to tear it.
+ * cloth, pulls hard enough to tear it. Each tear lets the cord go half slack, so a rip runs as far as
+ * the hand pulls it and stops when the hand stops, rather than running on across the sheet.
  */
 import { type Cloth, isAlive, type PhysicsWorld, pinClothPoint, slotOf } from '@bitphysics/physics';
 import { SHEET_WIDTH } from './scene';
@@ -34,6 +35,11 @@ export interface GrabOptions {
   hold: number;
   /** The hand's lead on the patch, m, >= 0, past which a held pull hardens. */
   holdLead: number;
+  /**
+   * The share of the pull past the firm pull that a tear lets go, in [0, 1]: 1 goes slack to the firm
+   * pull at each tear, 0 keeps pulling as hard (ClothGrab.update).
+   */
+  give: number;
 }
 
 /**
@@ -48,9 +54,12 @@ export interface GrabOptions {
  * past the sheet tears it within seconds even where the sheet's give leaves the pull just short of
  * tearing (a 1 m pull from the middle, held: without it the links by the hand level off at 43.4% and
  * never tear; with it the sheet tears 1.9 s in), while a gentle pull (0.8 m: the patch within 0.45 m
- * of the hand) never hardens.
+ * of the hand) never hardens. Each tear lets go half the pull past the firm pull (give 0.5): a 2 m pull
+ * from the middle, held 1 s, tears 5 links under the hem and the sheet stays on the line; kept at full
+ * pull the rip ran across under the hem and 578 of the 768 points fell (scripts/lab-cloth-pulls.mjs:
+ * 4-11 links torn by 2-3 m pulls from four places, at most 2 points off).
  */
-export const GRAB: GrabOptions = { radius: 0.4, stiffness: 300, maxForce: 80, firm: 15, slope: 20, hold: 30, holdLead: 0.5 };
+export const GRAB: GrabOptions = { radius: 0.4, stiffness: 300, maxForce: 80, firm: 15, slope: 20, hold: 30, holdLead: 0.5, give: 0.5 };
 
 /**
  * The lab's grip for a sheet of `size` points across: GRAB with its radius at least 1.5 link spacings,
@@ -65,8 +74,9 @@ export function gripFor(size: number): GrabOptions {
  * `radius`, each by a soft pin (pinClothPoint with options) toward t_i = hand + o_i, o_i its offset from
  * the press, with stiffness w_i k (compliance 1 / (w_i k)) and largest force w_i maxForce, where the
  * weights w_i = (1 - d_i / radius)^2, normalised to sum 1, favour the points nearest the press. The
- * grip's total pull is capped at F(L) = min(maxForce, firm + slope max(0, L - firm / stiffness) + H), L the
- * hand's distance from the patch and H the held pull's hardening (update).
+ * grip's total pull is capped at F(L) = min(maxForce, firm + slope max(0, L - G - firm / stiffness) + H),
+ * L the hand's distance from the patch, G the lead the cloth has given by tearing (`given`) and H the
+ * held pull's hardening (update).
  */
 export class ClothGrab {
   /** Held points' handles. */
@@ -77,8 +87,13 @@ export class ClothGrab {
   readonly offsets: number[] = [];
   /** Where the hand is, m. */
   readonly hand: [number, number];
-  /** How much the held pull has hardened, N (the cap's H: grows by hold (L - holdLead) a second while L > holdLead). */
+  /** How much the held pull has hardened, N (the cap's H: grows by hold (L - G - holdLead) a second while positive). */
   hardened = 0;
+  /**
+   * The lead the cloth has given, m (the cap's G): the hand's lead on the patch when the cloth last tore
+   * under the grip, brought down as the lead falls below it. A tear lets the pull go slack (update).
+   */
+  given = 0;
 
   private constructor(
     private readonly world: PhysicsWorld,
@@ -127,8 +142,7 @@ export class ClothGrab {
   /** The grip's largest total pull now, N: F(L) (see the class) for the hand's lead L on the patch. */
   cap(): number {
     const o = this.options;
-    const [px, py] = this.patch(this.at);
-    const lead = Math.hypot(this.hand[0] - px, this.hand[1] - py);
+    const lead = Math.max(0, this.lead() - this.given);
     return Math.min(o.maxForce, o.firm + o.slope * Math.max(0, lead - o.firm / o.stiffness) + this.hardened);
   }
 
@@ -140,14 +154,24 @@ export class ClothGrab {
 
   /**
    * Pulls each held point toward its place under the hand with its share of the cap (cap). Call before
-   * every step with the step's `dt`, s (>= 0; 0, as moveTo does, leaves the hardening as it is): the cap
-   * follows the patch as the sheet gives, and a pull held past holdLead hardens.
+   * every step with the step's `dt`, s (>= 0; 0, as moveTo does, leaves the hardening and the give as
+   * they are): the cap follows the patch as the sheet gives, a pull held past holdLead hardens, and a
+   * tear in the last step (the world's joint breaks) lets go the share `give` of the pull past the firm pull.
    */
   update(dt = 0): void {
     const o = this.options;
+    const lead = this.lead();
+    this.given = Math.min(this.given, lead);
     if (dt > 0) {
-      const past = this.lead() - o.holdLead;
-      // Hardens while held far, and stays hard while the hand holds on (a rip runs on as the hand keeps pulling).
+      if (this.world.joints.breaks.count > 0) {
+        // The cloth tore in the last step: the pull past the firm pull goes part slack, and grows again
+        // only as the hand leads on past where it tore. Kept at full pull, the rip ran on across the
+        // sheet (a 2 m pull took 578 of its 768 points off the line); eased, it runs as far as the hand pulls.
+        this.given += o.give * (lead - this.given);
+        this.hardened *= 1 - o.give;
+      }
+      const past = lead - this.given - o.holdLead;
+      // Hardens while held far past where the cloth last gave.
       this.hardened = Math.max(0, Math.min(o.maxForce, this.hardened + o.hold * Math.max(0, past) * dt));
     }
     const [x, y] = this.hand,

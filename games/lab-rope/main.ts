@@ -31,7 +31,7 @@ import { createPlot } from '@bitphysics/game-kit/plot';
 import { addMouseJoint, isAlive, type PhysicsWorld, step as physicsStep, removeJoint, setMouseTarget, slotOf } from '@bitphysics/physics';
 import type { WorldRect } from '@bitphysics/render-pixi';
 import { Container, Graphics, Text } from 'pixi.js';
-import { cutRopes } from './cut';
+import { cutRopes, findCuts, segmentDistance } from './cut';
 import {
   BALL_DRAG,
   BALL_RADIUS,
@@ -104,18 +104,27 @@ let game: RopeGame;
 let cuts = 0;
 /** Real time (s) at which the level was lost; NaN while playing. */
 let lostAt = Number.NaN;
+/** World time (s) at which the level was lost, and won; NaN until then. */
+let lostWorld = Number.NaN,
+  wonWorld = Number.NaN;
+/** Stars of the win's row turned gold so far, and the real time (s) the last one did. */
+let revealed = 0,
+  revealedAt = 0;
+/** Real time (s) each star of the level was caught (its pop: view.ts STAR_POP_S); NaN until caught. */
+const caughtAt = [Number.NaN, Number.NaN, Number.NaN];
 /**
  * A miss holds the scene until the player taps, clicks or presses a key, so a player looking
  * elsewhere still sees the miss before the level starts again: the scene dims to red, the
  * ball is ringed where it lies and the banner says so in large type on a dark card. The tap counts
- * once this long has passed, s (not the swipe that missed).
+ * once this long has passed, s, of real time or of the game's (not the swipe that missed).
  */
 const MISS_TAP_AFTER = 0.4;
 /** The miss banner's second line: a tap on a touch screen, a click (or Space) elsewhere. */
 const MISS_HINT = matchMedia('(pointer: coarse)').matches ? '\ntap to try again' : '\nclick or R to try again';
 /** Starts the level again at once after a miss (a tap or key during the pause); false otherwise. */
 function retryAfterMiss(): boolean {
-  if (game.outcome !== 'lost' || performance.now() / 1000 - lostAt < MISS_TAP_AFTER) return false;
+  if (game.outcome !== 'lost') return false;
+  if (performance.now() / 1000 - lostAt < MISS_TAP_AFTER && shell.world.time - lostWorld < MISS_TAP_AFTER) return false;
   shell.reset();
   return true;
 }
@@ -132,6 +141,10 @@ function createWorld(): PhysicsWorld {
   game = new RopeGame(scene);
   cuts = 0;
   lostAt = Number.NaN;
+  lostWorld = Number.NaN;
+  wonWorld = Number.NaN;
+  caughtAt.fill(Number.NaN);
+  revealed = 0;
   push = 0;
   plot?.clear();
   return scene.world;
@@ -153,18 +166,23 @@ function labStep(world: PhysicsWorld): void {
   const before = game.outcome;
   for (const i of game.update()) {
     const [x, y] = scene.level.stars[i]!;
+    caughtAt[i] = performance.now() / 1000;
     burst(x, y, 0xffd23f, 14);
     sound.chime(1175 + 220 * game.stars(), 0.3);
   }
   if (before === 'playing' && game.outcome === 'won') {
     best[params.level - 1] = Math.max(best[params.level - 1]!, game.stars());
+    wonWorld = world.time;
     sound.chime(784, 0.25);
     setTimeout(() => sound.chime(1046, 0.5), 160);
     const e = slotOf(scene.ball);
-    burst(world.components.Position.x[e]!, world.components.Position.y[e]! + 0.3, 0x7ee2a0, 24);
+    // Confetti from the basket: green, gold, coral and sky, 40 pieces.
+    for (const color of [0x7ee2a0, 0xffd23f, 0xff8a7a, 0x8ad4ff])
+      burst(world.components.Position.x[e]!, world.components.Position.y[e]! + 0.3, color, 10, 1.8);
   }
   if (before === 'playing' && game.outcome === 'lost') {
     lostAt = performance.now() / 1000;
+    lostWorld = world.time;
     misses[params.level - 1]!++;
     sound.impact(2, 'soft', { threshold: 0.1, loud: 10 });
     // A falling two-note "no".
@@ -308,9 +326,9 @@ const toWorld = (e: PointerEvent): [number, number] => {
 };
 let stroke: { x: number; y: number; sx: number; sy: number; moved: number; id: number; reach: number; cut: Set<number> } | null = null;
 /**
- * The pointer pushing the ball. A press on the ball is a push however fast it then moves: it never
- * cuts (a drag from the ball read as a flick cut the rope where it meets the ball); a swipe begun
- * off the ball cuts.
+ * The pointer pushing the ball (or pressed in the ring round it, see BALL_RING_PX). A press on the
+ * ball is a push however fast it then moves: it never cuts (a drag from the ball read as a flick cut
+ * the rope where it meets the ball); a swipe begun off the ball cuts.
  */
 const pusher = { id: -1 };
 const slash: { x: number; y: number; t: number }[] = [];
@@ -324,7 +342,7 @@ const TAP_REACH_PX = 26;
 const SWIPE_REACH_PX = { touch: 14, other: 5 } as const;
 
 /**
- * Cuts the ropes the segment (x0, y0)-(x1, y1), m, crosses or ends within `reach` m of (cut.ts), but
+ * Cuts the ropes the segment (x0, y0)-(x1, y1), m, crosses or passes within `reach` m of (cut.ts), but
  * none in `spare` (the ropes this stroke has cut already: a stroke cuts each rope once, however
  * long it runs beside it); each rope cut is added to `spare`.
  */
@@ -379,36 +397,78 @@ canvas.addEventListener('pointerdown', (e) => {
   const w = shell.world,
     b = slotOf(scene.ball),
     P = w.components.Position;
-  const near = Math.hypot(P.x[b]! - x, P.y[b]! - y) < BALL_RADIUS + 22 / renderer.camera.toScreenLength(1);
-  if (near && game.holding() > 0 && game.outcome === 'playing') {
+  const px = renderer.camera.toScreenLength(1);
+  // How far outside the ball the press is, CSS px.
+  const off = Math.hypot(P.x[b]! - x, P.y[b]! - y) * px - BALL_RADIUS * px;
+  const reach = e.pointerType === 'touch' ? SWIPE_REACH_PX.touch : SWIPE_REACH_PX.other;
+  if (off < BALL_RING_PX && game.holding() > 0 && game.outcome === 'playing') {
     pusher.id = e.pointerId;
-    // A push of at most 1.2 times the ball's weight: enough to swing it, not to carry it.
-    push = addMouseJoint(w, {
-      b: scene.ball,
-      anchor: [x, y],
-      target: [x, y],
-      hertz: 3,
-      dampingRatio: 0.7,
-      maxForce: 1.2 * w.components.Mass.value[b]! * Math.max(1, params.gravity),
-    });
-  } else {
-    stroke = {
-      x,
-      y,
-      sx: at.x,
-      sy: at.y,
-      moved: 0,
-      id: e.pointerId,
-      reach: e.pointerType === 'touch' ? SWIPE_REACH_PX.touch : SWIPE_REACH_PX.other,
-      cut: new Set(),
-    };
-    slash.length = 0;
-    slash.push({ x: at.x, y: at.y, t: performance.now() / 1000 });
-  }
+    // On the ball: a push at once. In the ring round it: a push unless the move crosses a rope first.
+    if (off < BALL_ON_PX) startPush(x, y);
+    else ring = { x, y, sx: at.x, sy: at.y, id: e.pointerId, reach };
+  } else startStroke(x, y, e.pointerId, reach);
   canvas.setPointerCapture(e.pointerId);
 });
+/** Starts a push of the ball from (x, y), m: a mouse joint on the ball held there, moved to the pointer. */
+function startPush(x: number, y: number): void {
+  const w = shell.world,
+    b = slotOf(scene.ball);
+  // A push of at most 1.2 times the ball's weight: enough to swing it, not to carry it.
+  push = addMouseJoint(w, {
+    b: scene.ball,
+    anchor: [x, y],
+    target: [x, y],
+    hertz: 3,
+    dampingRatio: 0.7,
+    maxForce: 1.2 * w.components.Mass.value[b]! * Math.max(1, params.gravity),
+  });
+}
+/** Starts a cutting stroke at (x, y), m (`at` the pointer in CSS px), with `reach` px. */
+function startStroke(x: number, y: number, id: number, reach: number): void {
+  stroke = { x, y, sx: at.x, sy: at.y, moved: 0, id, reach, cut: new Set() };
+  slash.length = 0;
+  slash.push({ x: at.x, y: at.y, t: performance.now() / 1000 });
+}
+/**
+ * The ring round the ball, CSS px outside its edge: a press within BALL_ON_PX of the ball is on it
+ * and pushes it, however it then moves (a drag from the ball never cuts); one from there out to
+ * BALL_RING_PX pushes it too (a finger's grab of a small ball), unless its move, not passing over
+ * the ball, crosses or passes within swipe reach of a rope that holds the ball before it has gone
+ * RING_DECIDE_PX: then it is a swipe from the press and cuts. A swipe across the rope just above the
+ * ball began in the ring and only dragged the ball.
+ */
+const BALL_ON_PX = 6,
+  BALL_RING_PX = 22,
+  RING_DECIDE_PX = 30;
+/** A press in the ring round the ball not yet a push or a stroke: where (m, and CSS px), its pointer and swipe reach (px). */
+let ring: { x: number; y: number; sx: number; sy: number; id: number; reach: number } | null = null;
 canvas.addEventListener('pointermove', (e) => {
   const [x, y] = toWorld(e);
+  if (ring && e.pointerId === ring.id) {
+    const r = ring;
+    const open = scene.ropes.filter((_, i) => isAlive(shell.world, scene.ropes[i]!.ballLink));
+    const reach = r.reach / renderer.camera.toScreenLength(1);
+    const b = slotOf(scene.ball),
+      P = shell.world.components.Position;
+    // A move over the ball itself is a push (it crosses the rope's last link under the ball).
+    const clear = segmentDistance(P.x[b]!, P.y[b]!, r.x, r.y, x, y) >= BALL_RADIUS;
+    if (clear && findCuts(shell.world, open, scene.ball, r.x, r.y, x, y, reach).length > 0) {
+      ring = null;
+      pusher.id = -1;
+      const now = { x: at.x, y: at.y };
+      at.x = r.sx;
+      at.y = r.sy;
+      startStroke(r.x, r.y, e.pointerId, r.reach);
+      at.x = now.x;
+      at.y = now.y;
+      strokeTo(x, y);
+    } else if (Math.hypot(at.x - r.sx, at.y - r.sy) >= RING_DECIDE_PX) {
+      ring = null;
+      startPush(r.x, r.y);
+      setMouseTarget(shell.world, push, [x, y]);
+    }
+    return;
+  }
   if (push && isAlive(shell.world, push) && e.pointerId === pusher.id) {
     setMouseTarget(shell.world, push, [x, y]);
     return;
@@ -418,7 +478,7 @@ canvas.addEventListener('pointermove', (e) => {
 });
 /**
  * Carries the stroke on to (x, y), m (the pointer's place now, `at` in CSS px): cuts what the
- * segment from its last place crosses (or, once it has moved 8 px, ends within its reach of),
+ * segment from its last place crosses (or, once it has moved 8 px, passes within its reach of),
  * however long the segment (a fast flick moves far between two pointer events), and draws it.
  */
 function strokeTo(x: number, y: number): void {
@@ -439,6 +499,7 @@ const release = (e: PointerEvent): void => {
   const [x, y] = toWorld(e);
   releasePush();
   pusher.id = -1;
+  ring = null;
   if (stroke && e.pointerId === stroke.id) {
     // The last stretch, from the last move to where the pointer left: a flick may send its up event
     // far from its last move, or with no move between down and up at all.
@@ -453,6 +514,7 @@ canvas.addEventListener('pointercancel', release);
 shell.onWorldChange(() => {
   push = 0;
   stroke = null;
+  ring = null;
   sparkles.length = 0;
   // The panel's level slider and the side column follow a new level or a retry at once, so the
   // slider never shows a level the Next level button has moved on from.
@@ -461,12 +523,12 @@ shell.onWorldChange(() => {
   updateStatus();
 });
 
-/** Sparkles flying out from (x, y), m. */
-function burst(x: number, y: number, color: number, n: number): void {
+/** `n` sparkles of `color` flying out from (x, y), m, at 1 to 3 m/s times `speed`. */
+function burst(x: number, y: number, color: number, n: number, speed = 1): void {
   const now = performance.now() / 1000;
   for (let i = 0; i < n; i++) {
     const a = (2 * Math.PI * i) / n + Math.random() * 0.5,
-      s = 1 + Math.random() * 2;
+      s = speed * (1 + Math.random() * 2);
     sparkles.push({ x, y, vx: s * Math.cos(a), vy: s * Math.sin(a) + 1, born: now, color });
   }
 }
@@ -522,6 +584,7 @@ function showStars(x: number, y: number, got: number, of: number, alpha: number,
     star.visible = i < of;
     star.x = (i - (of - 1) / 2) * STAR_SIZE * 1.1;
     const on = i < got;
+    star.scale.set(1);
     star.style.fill = on ? 0xffd23f : 0x22324a;
     star.style.stroke = on ? { color: 0x5a3a00, width: 3 } : { color: 0xe8eef5, width: 3 };
   });
@@ -533,7 +596,7 @@ function draw(alpha: number, world: PhysicsWorld): void {
   const dt = Math.min(0.05, now - lastFrame);
   lastFrame = now;
   const cam = renderer.camera;
-  view.update(world, scene.level, scene.ropes, scene.ball, game.caught, cam, alpha, now, app.screen.width, app.screen.height);
+  view.update(world, scene.level, scene.ropes, scene.ball, game.caught, cam, alpha, now, app.screen.width, app.screen.height, caughtAt);
   overlay.clear();
   // The swipe: the last 0.25 s of the stroke, fading.
   while (slash.length > 0 && now - slash[0]!.t > 0.25) slash.shift();
@@ -776,7 +839,16 @@ function drawBanner(now: number): void {
     const s = game.stars();
     const last = params.level === LEVELS.length;
     setBanner(last ? 'All levels done!' : 'In the basket!', 0x9ff0b8, 1);
-    showStars(banner.x, starsY, s, scene.level.stars.length, 1);
+    // The stars won turn gold one at a time, each with a chime a step higher, swelling as it lands.
+    const due = Math.max(0, Math.min(s, Math.floor((shell.world.time - wonWorld - STAR_REVEAL_FIRST) / STAR_REVEAL_S) + 1));
+    if (due > revealed) {
+      revealed = due;
+      revealedAt = now;
+      sound.chime(880 * 1.26 ** (revealed - 1), 0.35);
+    }
+    showStars(banner.x, starsY, revealed, scene.level.stars.length, 1);
+    const swell = now - revealedAt;
+    if (revealed > 0 && swell < 0.25) starRow.children[revealed - 1]!.scale.set(1 + 0.45 * (1 - swell / 0.25));
     showRetry(false);
     showNext(true, last ? 'Play again ▶' : 'Next level ▶');
     placeNext(starsY + STAR_SIZE * 0.6 + 12);
@@ -821,6 +893,9 @@ function drawBanner(now: number): void {
   const t = shell.world.time;
   setBanner(`Level ${params.level}: ${scene.level.name}`, 0xffffff, t < 1 ? 1 : Math.max(0, 1 - (t - 1) * 2));
 }
+/** Seconds from the win to its first star turning gold, and between the next ones. */
+const STAR_REVEAL_FIRST = 0.25,
+  STAR_REVEAL_S = 0.3;
 /** Shows `text` in the banner in colour `color` (0xRRGGBB) at opacity `alpha` in [0, 1], in `size` px type. */
 function setBanner(text: string, color: number, alpha: number, size = 30): void {
   if (banner.text !== text) banner.text = text;

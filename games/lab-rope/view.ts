@@ -82,6 +82,9 @@ function smooth(pts: number[], steps: number): number[] {
   return out;
 }
 
+/** How long a caught star's pop lasts, s: it swells, spins and fades in a widening ring. */
+export const STAR_POP_S = 0.5;
+
 /** The level's drawing: `container` goes into the scene; call `update` every frame. */
 export class RopeView {
   readonly container = new Container({ label: 'rope level' });
@@ -120,7 +123,8 @@ export class RopeView {
 
   /**
    * Draws `level` with its ropes and ball at interpolation factor `alpha`; `caught` says which stars
-   * are gone, `time` (s) turns the stars. `W` x `H` is the canvas, px.
+   * are gone, `time` (s) turns the stars. `W` x `H` is the canvas, px. `caughtAt` (s, on `time`'s
+   * clock; NaN while not caught) times each caught star's pop (STAR_POP_S).
    */
   update(
     world: PhysicsWorld,
@@ -133,6 +137,7 @@ export class RopeView {
     time: number,
     W: number,
     H: number,
+    caughtAt: readonly number[] = [],
   ): void {
     const key = `${level.name}:${W}x${H}:${cam.toScreenX(0).toFixed(2)},${cam.toScreenY(0).toFixed(2)},${cam.toScreenLength(1).toFixed(4)}`;
     if (key !== this.roomKey) {
@@ -195,26 +200,40 @@ export class RopeView {
     this.ballSprite.height = 2 * r;
     this.ballSprite.rotation = world.components.Angle.value[be]! * -1;
     this.drawBasketFront(level, cam);
-    // Stars, turning and pulsing; caught ones are gone.
+    // Stars, turning and pulsing; a caught one pops (grows, spins and fades in a widening ring),
+    // then is gone.
     const f = this.front;
     f.clear();
+    this.popping = 0;
     level.stars.forEach(([sx, sy], i) => {
-      if (caught[i]) return;
       const x = cam.toScreenX(sx),
         y = cam.toScreenY(sy);
-      const R = cam.toScreenLength(0.22) * (1 + 0.08 * Math.sin(3 * time + i));
-      f.circle(x, y, R * 1.6).fill({ color: 0xffe27a, alpha: 0.18 });
+      let R = cam.toScreenLength(0.22) * (1 + 0.08 * Math.sin(3 * time + i)),
+        a0 = 0.4 * Math.sin(time + i),
+        opacity = 1;
+      if (caught[i]) {
+        const u = (time - (caughtAt[i] ?? Number.NaN)) / STAR_POP_S;
+        if (!(u >= 0 && u < 1)) return;
+        this.popping++;
+        // The ring widens from the star to three times its size; the star swells to twice and fades.
+        f.circle(x, y, R * (1 + 2 * u)).stroke({ width: Math.max(2, R * 0.25 * (1 - u)), color: 0xffe27a, alpha: 1 - u });
+        R *= 1 + u;
+        a0 += 4 * u;
+        opacity = 1 - u * u;
+      } else f.circle(x, y, R * 1.6).fill({ color: 0xffe27a, alpha: 0.18 });
       const pts: number[] = [];
       for (let k = 0; k < 10; k++) {
-        const a = -Math.PI / 2 + (Math.PI * k) / 5 + 0.4 * Math.sin(time + i);
+        const a = -Math.PI / 2 + (Math.PI * k) / 5 + a0;
         const rr = k % 2 ? R * 0.45 : R;
         pts.push(x + rr * Math.cos(a), y + rr * Math.sin(a));
       }
       f.poly(pts)
-        .fill({ color: 0xffd23f })
-        .stroke({ width: Math.max(1.5, R * 0.12), color: 0xb07a00 });
+        .fill({ color: 0xffd23f, alpha: opacity })
+        .stroke({ width: Math.max(1.5, R * 0.12), color: 0xb07a00, alpha: opacity });
     });
   }
+  /** Caught stars drawn popping in the last frame. */
+  popping = 0;
 
   /**
    * The basket's front over the ball: the wicker see-through (a ball inside shows dimmed behind it),

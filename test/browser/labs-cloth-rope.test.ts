@@ -900,7 +900,9 @@ for (const [device, options] of [
       expect(retry?.text).toBe('Try again ↺');
       expect(apart(retry!.box, card.card)).toBe(true);
       expect(apart(retry!.box, card.ball)).toBe(true);
-      await g.page.waitForTimeout(450); // a tap counts 0.4 s after the miss (not the swipe that missed)
+      // A tap counts 0.4 s after the miss (not the swipe that missed): 0.5 s of the game's time, in
+      // steps (drawing 30 frames in software took longer than the 0.45 s this waited on the clock).
+      await g.runFrames(30, { draw: false, resume: false });
       const mid = await toPage(g, 0, 4);
       if (device === 'phone') await g.page.touchscreen.tap(mid.x, mid.y);
       else await g.page.mouse.click(mid.x, mid.y);
@@ -969,7 +971,7 @@ for (const [device, options] of [
       expect(g.errors).toEqual([]);
     });
 
-    it('a swipe that stops just short of the rope still cuts it (14 px for a finger, 5 px for the mouse); a fast flick cuts it; a drag or flick begun on the ball pushes it and cuts nothing', async () => {
+    it('a swipe that stops just short of the rope still cuts it (14 px for a finger, 5 px for the mouse); a fast flick cuts it; a drag or flick begun on the ball pushes it and cuts nothing; a swipe begun beside the ball cuts', async () => {
       await g.page.evaluate(() => {
         const w = window.game as unknown as RopeLab & { reset(): void };
         w.reset();
@@ -1053,6 +1055,38 @@ for (const [device, options] of [
       });
       await drag(g.page, [await toPage(g, ballAt[0], ballAt[1]), await toPage(g, ballAt[0] + 1, ballAt[1])], 6);
       expect(await cutState(), `${device}: a drag from the ball`).toEqual({ cuts: 0, holding: 1 });
+      // A swipe begun in the ring round the ball (14 px out from its edge, 35 degrees off the rope
+      // beside it) across the rope just above the ball, not over the ball: a cut (it dragged the ball).
+      await g.page.evaluate(() => {
+        const w = window.game as unknown as RopeLab & { reset(): void };
+        w.reset();
+        w.paused = true;
+      });
+      const ringSwipe = await g.page.evaluate(() => {
+        const w = window.game as unknown as RopeLab;
+        const P = w.world.components.Position,
+          ids = w.ids();
+        const b = ids.ball % 2 ** 25,
+          [ax, ay] = ids.ropes[0]!.anchor as [number, number];
+        const bx = P.x[b]!,
+          by = P.y[b]!;
+        const d = Math.hypot(ax - bx, ay - by),
+          ux = (ax - bx) / d,
+          uy = (ay - by) / d;
+        const r = 0.28 + 14 / w.renderer.camera.toScreenLength(1),
+          c = Math.cos((35 * Math.PI) / 180),
+          s = Math.sin((35 * Math.PI) / 180);
+        // Start r from the centre, 35 degrees to the rope's left (n = (-uy, ux)); end as far to its
+        // right and 0.35 m on.
+        return [
+          bx + r * (c * ux - s * uy),
+          by + r * (c * uy + s * ux),
+          bx + r * c * ux + (r * s + 0.35) * uy,
+          by + r * c * uy - (r * s + 0.35) * ux,
+        ];
+      });
+      await drag(g.page, [await toPage(g, ringSwipe[0]!, ringSwipe[1]!), await toPage(g, ringSwipe[2]!, ringSwipe[3]!)], 6);
+      expect(await cutState(), `${device}: a swipe begun beside the ball`).toEqual({ cuts: 1, holding: 0 });
       expect(g.errors).toEqual([]);
     });
 
@@ -1105,8 +1139,29 @@ for (const [device, options] of [
       await g.page.evaluate(() => {
         (window.game as unknown as Lab).paused = false;
       });
-      await g.runUntil(() => (window.game as unknown as RopeLab).outcome() === 'won', null, { maxFrames: 1800 });
-      // The banner and, under it, a row of the level's 3 stars, as many gold as were caught.
+      // Paused in the frame of the win, so no frame of the page's own runs on before it is read.
+      await g.runUntil(
+        () => {
+          const w = window.game as unknown as RopeLab;
+          if (w.outcome() !== 'won') return false;
+          w.paused = true;
+          return true;
+        },
+        null,
+        { maxFrames: 1800 },
+      );
+      // The banner and, under it, a row of the level's 3 stars, as many gold as were caught: they turn
+      // gold one at a time, none in the frame of the win, all within 1 s of the game's time (0.85 s).
+      const atWin = await g.page.evaluate(() => {
+        const w = window.game as unknown as RopeLab;
+        return { row: w.banner().stars, stars: w.stars() };
+      });
+      expect(atWin.stars).toBeGreaterThan(0);
+      expect(atWin.row).toEqual([0, 3]);
+      // 1 s of the game's time in steps, then a frame drawn: all the stars caught are gold.
+      await g.runFrames(60, { draw: false, resume: false });
+      await g.runFrames(1, { unpause: false });
+      expect(await g.page.evaluate(() => (window.game as unknown as RopeLab).banner().stars)).toEqual([atWin.stars, 3]);
       await g.waitFor(() => (window.game as unknown as RopeLab).banner().text === 'In the basket!', null);
       // The status says the level is cleared without growing (on a phone it grew to 3 lines and
       // pushed the scene down): as tall as before the win.
@@ -1190,7 +1245,7 @@ for (const [device, options] of [
         w.paused = true;
         w.advance(6);
       });
-      await g.page.waitForTimeout(100);
+      await g.runFrames(1, { unpause: false });
       expect(await g.page.evaluate(() => (window.game as unknown as RopeLab).flight().path.length)).toBe(0);
       const [x0, y0] = await ropeMiddle(g, 0);
       const at0 = await toPage(g, x0 + 0.05, y0);
@@ -1208,7 +1263,7 @@ for (const [device, options] of [
         w.paused = true;
         w.advance(18);
       });
-      await g.page.waitForTimeout(100);
+      await g.runFrames(1, { unpause: false });
       expect(await g.page.evaluate(() => (window.game as unknown as RopeLab).flight().path.length)).toBe(0);
       expect(await g.page.evaluate(() => (window.game as unknown as RopeLab & { hintCaption(): string }).hintCaption())).toBe('');
       const [x, y] = await ropeMiddle(g, 0);
@@ -1221,7 +1276,7 @@ for (const [device, options] of [
       });
       await g.runUntil(() => (window.game as unknown as RopeLab).outcome() === 'lost', null, { maxFrames: 1800 });
       expect(await g.page.evaluate(() => (window.game as unknown as RopeLab).misses()[2])).toBe(1);
-      await g.page.waitForTimeout(500);
+      await g.runFrames(30, { draw: false });
       await g.page.keyboard.press('Space');
       await g.waitFor(() => (window.game as unknown as RopeLab).outcome() === 'playing', null);
       await g.waitFor(() => (window.game as unknown as RopeLab).flight().path.length > 4, null);

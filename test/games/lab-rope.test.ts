@@ -372,6 +372,35 @@ describe('lab-rope levels', () => {
     expect(cutRopes(t.world, t.ropes, t.ball, mx + 0.1, my, mx + 0.1, my, 0.15).length).toBe(1);
   });
 
+  it('a fast swipe cuts a rope it passes within reach of anywhere along a move, not only at its end: one begun on the rope, one past its end', () => {
+    // One pointer move of a fast finger (0.6 m: about 40 px on a phone): begun 0.02 m beside the
+    // rope's middle and moving straight off it, and passing 0.1 m below the rope's last body past
+    // the ball's side. Reach 0.2 m (a finger's 14 px). Measured only from the move's end point (0.6 m
+    // off), neither cut (a scripted set of fast finger swipes passing within 14 px of level 1's rope:
+    // 13 of 336 cut nothing; now none). Nothing is cut by a move that passes 0.3 m from the rope.
+    const swipe = (x0: number, y0: number, x1: number, y1: number) => {
+      const t = createRopeScene(0, DEFAULTS);
+      const r = t.ropes[0]!;
+      const [ax, ay] = r.anchor,
+        [bx, by] = ballAt(t.world, t.ball);
+      // The rope's line from the anchor to the ball: along it (u) and square to it (v).
+      const d = Math.hypot(bx - ax, by - ay),
+        ux = (bx - ax) / d,
+        uy = (by - ay) / d;
+      const at = (s: number, o: number): [number, number] => [ax + s * ux - o * uy, ay + s * uy + o * ux];
+      const [px, py] = at(x0 * d, y0),
+        [qx, qy] = at(x1 * d, y1);
+      return cutRopes(t.world, t.ropes, t.ball, px, py, qx, qy, 0.2).length;
+    };
+    // From 0.02 m beside the middle straight off it to 0.62 m.
+    expect(swipe(0.5, 0.02, 0.5, 0.62)).toBe(1);
+    // Along the rope's line, 0.1 m to its side, from the rope's last tenth on past the ball, ending 0.6 m past its centre.
+    expect(swipe(0.9, 0.1, 1 + 0.6 / 2.6, 0.1)).toBe(1);
+    // The same moves 0.3 m from the rope: no cut.
+    expect(swipe(0.5, 0.3, 0.5, 0.9)).toBe(0);
+    expect(swipe(0.3, 0.3, 0.7, 0.3)).toBe(0);
+  });
+
   it('a cut rope is two chains: the piece below the cut falls, the other hangs from the anchor', () => {
     const s = createRopeScene(0, DEFAULTS);
     for (let i = 0; i < 30; i++) step(s.world);
