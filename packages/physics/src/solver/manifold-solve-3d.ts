@@ -291,6 +291,12 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
       iA = H[h + M3.HEAD_INV_IA]!,
       iB = H[h + M3.HEAD_INV_IB]!;
     let pushed = false;
+    // The normal rows change the bodies' linear velocities only along n, by m_A dl and m_B dl: the
+    // linear part of v_n, (v_B - v_A) . n, is carried from row to row (it grows by (m_A + m_B) |n|^2 dl),
+    // and the velocities themselves take the rows' sum of impulses once the sweeps end.
+    let vnLinear = (vbx - vax) * nx + (vby - vay) * ny + (vbz - vaz) * nz,
+      sumDl = -0;
+    const linearGain = (mA + mB) * (nx * nx + ny * ny + nz * nz);
     // Normal rows swept until a flat hit is shared by the points as the exact solve shares it, not by the
     // order they are visited in (NORMAL_SWEEPS); a soft row ends the sweeps after the first.
     const sweeps = m === 1 ? 1 : NORMAL_SWEEPS;
@@ -324,11 +330,7 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
           ms = T[sel]!,
           is = T[sel + 1]!;
         softMet |= soft;
-        const vn =
-          (vbx - vax) * nx +
-          (vby - vay) * ny +
-          (vbz - vaz) * nz +
-          (wbx * rb0 + wby * rb1 + wbz * rb2 - (wax * ra0 + way * ra1 + waz * ra2));
+        const vn = vnLinear + (wbx * rb0 + wby * rb1 + wbz * rb2 - (wax * ra0 + way * ra1 + waz * ra2));
         const old = LN[q]!;
         const lam = normalImpulse(old, H[p + CP_NORMAL_MASS]!, ms, is, vn, bias);
         const dl = lam - old;
@@ -337,14 +339,8 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
         // Applied also when dl = 0 (it then adds zeros): a branch on dl !== 0 that the first rows V8 saw
         // never entered was compiled without type feedback, and its first push threw the code away.
         // Body row 0 (the static world) has zero inverse mass and inertia, and is never written back.
-        const fa = mA * dl,
-          fb = mB * dl;
-        vax -= fa * nx;
-        vay -= fa * ny;
-        vaz -= fa * nz;
-        vbx += fb * nx;
-        vby += fb * ny;
-        vbz += fb * nz;
+        vnLinear += linearGain * dl;
+        sumDl += dl;
         if (iso) {
           const ga = iA * dl,
             gb = iB * dl;
@@ -372,6 +368,12 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
         last = sw >= sweeps;
       if (softMet === 1 || settled || slow || last) break;
     }
+    vax -= mA * sumDl * nx;
+    vay -= mA * sumDl * ny;
+    vaz -= mA * sumDl * nz;
+    vbx += mB * sumDl * nx;
+    vby += mB * sumDl * ny;
+    vbz += mB * sumDl * nz;
     // Friction of the manifold at its anchor (t1, t2, then the twist about n), limited by mu sum(lambda_n).
     let sumLn = 0;
     for (let k = 0; k < m; k++) sumLn += LN[4 * i + k]!;
