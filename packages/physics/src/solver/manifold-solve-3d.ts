@@ -202,8 +202,7 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
     PTS = buf.points,
     ISO = buf.iso;
   const invHs = 1 / hs,
-    negPush = -push,
-    biasOn = useBias ? 1 : 0;
+    negPush = -push;
   for (let i = 0, count = buf.count; i < count; i++) {
     const ka = IA[i]!,
       kb = IB[i]!,
@@ -323,16 +322,20 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
           rb2 = H[p + CP_NORMAL_ROW + M3.ROW_BZ]!;
         // s = s0 + (d_B - d_A) . n + theta_B . (r_B x n) - theta_A . (r_A x n)
         const s = H[p + CP_SEPARATION]! + dn + (hbx * rb0 + hby * rb1 + hbz * rb2 - (hax * ra0 + hay * ra1 + haz * ra2));
-        // The row's regime, bias and scales (solver/contact-point.ts), selected without a branch.
-        const soft = softRow(s, biasOn),
-          sel = scaleBase + SN_SOFT_ROW * soft;
-        const bias = normalBias(s, invHs, biasRate, negPush, soft),
-          ms = T[sel]!,
-          is = T[sel + 1]!;
-        softMet |= soft;
         const vn = vnLinear + (wbx * rb0 + wby * rb1 + wbz * rb2 - (wax * ra0 + way * ra1 + waz * ra2));
         const old = LN[q]!;
-        const lam = normalImpulse(old, H[p + CP_NORMAL_MASS]!, ms, is, vn, bias);
+        let lam: number;
+        if (useBias) {
+          // The row's regime, bias and scales (solver/contact-point.ts), selected without a branch.
+          const soft = softRow(s, 1),
+            sel = scaleBase + SN_SOFT_ROW * soft;
+          softMet |= soft;
+          lam = normalImpulse(old, H[p + CP_NORMAL_MASS]!, T[sel]!, T[sel + 1]!, vn, normalBias(s, invHs, biasRate, negPush, soft));
+        } else {
+          // A relax pass: no row is soft (its scales are 1 and 0, solver/contact-point-layout.ts), and its
+          // bias is s / h_s while speculative, else 0: normalImpulse with those, its zero terms left out.
+          lam = Math.max(old - H[p + CP_NORMAL_MASS]! * (vn + +(s > 0) * (s * invHs)), 0);
+        }
         const dl = lam - old;
         LN[q] = lam;
         CARRIED[q] = CARRIED[q]! | +(lam > 0);
