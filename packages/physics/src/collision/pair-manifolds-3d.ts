@@ -432,9 +432,10 @@ export function emit(
   else buf.local[i] = 0;
   const prev = boxRow.a >= 0 ? boxRow.prev : lookupRow(st.previousIndex, rowKey(world.capacity, ea, eb, sub));
   buf.prevRow[i] = prev;
-  const P = st.previous,
-    reused = boxRow.a >= 0 && boxRow.from >= 0,
-    R = buf.anchors;
+  // The warm start is carried over from the previous row after the pass (carryImpulses).
+  if (reusedRows.length <= i) reusedRows = grownRows(reusedRows, buf.bodyA.length);
+  reusedRows[i] = boxRow.a >= 0 && boxRow.from >= 0 ? 1 : 0;
+  const R = buf.anchors;
   for (let k = 0; k < m.count; k++) {
     const q = 4 * i + k;
     const o = ANCHOR_STRIDE * q;
@@ -446,30 +447,65 @@ export function emit(
     R[o + ANCHOR_BZ] = m.z[k]! - bz;
     buf.sep[q] = m.sep[k]!;
     buf.id[q] = m.id[k]!;
-    buf.ln[q] = 0;
     buf.carried[q] = 0;
-    if (reused) {
-      // A reused manifold has the previous row's points in the same order (reuseManifold).
-      buf.ln[q] = P.ln[4 * prev + k]!;
-    } else if (prev >= 0) {
-      for (let j = 0; j < P.points[prev]!; j++) {
-        const pq = 4 * prev + j;
-        if (P.id[pq] === m.id[k]) {
-          buf.ln[q] = P.ln[pq]!;
-          break;
-        }
-      }
-    }
   }
-  // The manifold's friction (one anchor a row) from the pair's last row while the normal barely turned (t1 follows n).
-  if (prev >= 0 && P.nx[prev]! * nx + P.ny[prev]! * ny + P.nz[prev]! * nz > 0.99) {
-    buf.ft[3 * i] = P.ft[3 * prev]!;
-    buf.ft[3 * i + 1] = P.ft[3 * prev + 1]!;
-    buf.ft[3 * i + 2] = P.ft[3 * prev + 2]!;
-  } else {
-    buf.ft[3 * i] = 0;
-    buf.ft[3 * i + 1] = 0;
-    buf.ft[3 * i + 2] = 0;
+}
+
+/** Per row of the pass (st.current): 1 when emit reused the previous row's manifold (its points in that row's order), else 0. */
+let reusedRows: Uint8Array = new Uint8Array(64);
+
+/** A copy of `rows` with room for at least `n` rows (twice its length). */
+function grownRows(rows: Uint8Array, n: number): Uint8Array {
+  const grown = new Uint8Array(Math.max(n, 2 * rows.length));
+  grown.set(rows);
+  return grown;
+}
+
+/**
+ * The warm start of the pass's rows (st.current), from each row's previous row (prevRow, -1: none): a
+ * point's normal impulse from the previous point of the same feature id (a reused manifold's points
+ * are the previous row's, in order), the friction impulses while the normal barely turned (t1 follows
+ * n), else 0. Run once the rows are final, in a loop of its own rather than in `emit`: the previous
+ * rows' impulses and normals are read in row order, from memory the step has not touched since, and a
+ * short loop keeps many of those reads in flight where emit's long body waited for each.
+ * @category Collision
+ */
+export function carryImpulses(st: Contact3DState): void {
+  const buf = st.current,
+    P = st.previous;
+  const LN = buf.ln,
+    FT = buf.ft,
+    PL = P.ln,
+    PF = P.ft,
+    ID = buf.id,
+    PID = P.id,
+    reused = reusedRows;
+  for (let i = 0, count = buf.count; i < count; i++) {
+    const prev = buf.prevRow[i]!,
+      m = buf.points[i]!;
+    for (let k = 0; k < m; k++) {
+      const q = 4 * i + k;
+      LN[q] = 0;
+      if (prev < 0) continue;
+      if (reused[i] === 1) LN[q] = PL[4 * prev + k]!;
+      else
+        for (let j = 0, pm = P.points[prev]!; j < pm; j++) {
+          const pq = 4 * prev + j;
+          if (PID[pq] === ID[q]) {
+            LN[q] = PL[pq]!;
+            break;
+          }
+        }
+    }
+    if (prev >= 0 && P.nx[prev]! * buf.nx[i]! + P.ny[prev]! * buf.ny[i]! + P.nz[prev]! * buf.nz[i]! > 0.99) {
+      FT[3 * i] = PF[3 * prev]!;
+      FT[3 * i + 1] = PF[3 * prev + 1]!;
+      FT[3 * i + 2] = PF[3 * prev + 2]!;
+    } else {
+      FT[3 * i] = 0;
+      FT[3 * i + 1] = 0;
+      FT[3 * i + 2] = 0;
+    }
   }
 }
 

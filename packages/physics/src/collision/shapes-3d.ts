@@ -10,6 +10,7 @@ import { pairs } from './broadphase/pairs-3d.js';
 import { ColliderMaterial, ensure, keptPose, notePose, ownPoses, SHAPE_SPECULATIVE_DISTANCE, scratch, wakes } from './colliders-3d.js';
 import { pushEvent } from './events.js';
 import { type Contact3DState, clearRowIndex, contact3DStateOf, growManifold3DBuffer, insertRow, rowKey } from './manifolds-3d.js';
+import { carryImpulses } from './pair-manifolds-3d.js';
 import { BodyType } from './state.js';
 
 /**
@@ -69,6 +70,7 @@ export function shape3DCollisionSystem(world: PhysicsWorld): void {
     for (let i = 0; i < wakes.count; i++) woken += wakeIslandForStep(world, wakes.list[i]!);
     if (woken === 0) break;
   }
+  carryImpulses(st);
   // The contact count of the step's statistics: the ball contacts of this step (their buffer, which the
   // balls' narrowphase refills earlier in the collide stage and which stays empty in a world without
   // it) and the 3D shape contact points (solver rows).

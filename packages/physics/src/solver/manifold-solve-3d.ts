@@ -202,8 +202,7 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
     PTS = buf.points,
     ISO = buf.iso;
   const invHs = 1 / hs,
-    negPush = -push,
-    biasOn = useBias ? 1 : 0;
+    negPush = -push;
   for (let i = 0, count = buf.count; i < count; i++) {
     const ka = IA[i]!,
       kb = IB[i]!,
@@ -291,6 +290,12 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
       iA = H[h + M3.HEAD_INV_IA]!,
       iB = H[h + M3.HEAD_INV_IB]!;
     let pushed = false;
+    // The normal rows change the bodies' linear velocities only along n, by m_A dl and m_B dl: the
+    // linear part of v_n, (v_B - v_A) . n, is carried from row to row (it grows by (m_A + m_B) |n|^2 dl),
+    // and the velocities themselves take the rows' sum of impulses once the sweeps end.
+    let vnLinear = (vbx - vax) * nx + (vby - vay) * ny + (vbz - vaz) * nz,
+      sumDl = -0;
+    const linearGain = (mA + mB) * (nx * nx + ny * ny + nz * nz);
     // Normal rows swept until a flat hit is shared by the points as the exact solve shares it, not by the
     // order they are visited in (NORMAL_SWEEPS); a soft row ends the sweeps after the first.
     const sweeps = m === 1 ? 1 : NORMAL_SWEEPS;
@@ -317,34 +322,28 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
           rb2 = H[p + CP_NORMAL_ROW + M3.ROW_BZ]!;
         // s = s0 + (d_B - d_A) . n + theta_B . (r_B x n) - theta_A . (r_A x n)
         const s = H[p + CP_SEPARATION]! + dn + (hbx * rb0 + hby * rb1 + hbz * rb2 - (hax * ra0 + hay * ra1 + haz * ra2));
-        // The row's regime, bias and scales (solver/contact-point.ts), selected without a branch.
-        const soft = softRow(s, biasOn),
-          sel = scaleBase + SN_SOFT_ROW * soft;
-        const bias = normalBias(s, invHs, biasRate, negPush, soft),
-          ms = T[sel]!,
-          is = T[sel + 1]!;
-        softMet |= soft;
-        const vn =
-          (vbx - vax) * nx +
-          (vby - vay) * ny +
-          (vbz - vaz) * nz +
-          (wbx * rb0 + wby * rb1 + wbz * rb2 - (wax * ra0 + way * ra1 + waz * ra2));
+        const vn = vnLinear + (wbx * rb0 + wby * rb1 + wbz * rb2 - (wax * ra0 + way * ra1 + waz * ra2));
         const old = LN[q]!;
-        const lam = normalImpulse(old, H[p + CP_NORMAL_MASS]!, ms, is, vn, bias);
+        let lam: number;
+        if (useBias) {
+          // The row's regime, bias and scales (solver/contact-point.ts), selected without a branch.
+          const soft = softRow(s, 1),
+            sel = scaleBase + SN_SOFT_ROW * soft;
+          softMet |= soft;
+          lam = normalImpulse(old, H[p + CP_NORMAL_MASS]!, T[sel]!, T[sel + 1]!, vn, normalBias(s, invHs, biasRate, negPush, soft));
+        } else {
+          // A relax pass: no row is soft (its scales are 1 and 0, solver/contact-point-layout.ts), and its
+          // bias is s / h_s while speculative, else 0: normalImpulse with those, its zero terms left out.
+          lam = Math.max(old - H[p + CP_NORMAL_MASS]! * (vn + +(s > 0) * (s * invHs)), 0);
+        }
         const dl = lam - old;
         LN[q] = lam;
         CARRIED[q] = CARRIED[q]! | +(lam > 0);
         // Applied also when dl = 0 (it then adds zeros): a branch on dl !== 0 that the first rows V8 saw
         // never entered was compiled without type feedback, and its first push threw the code away.
         // Body row 0 (the static world) has zero inverse mass and inertia, and is never written back.
-        const fa = mA * dl,
-          fb = mB * dl;
-        vax -= fa * nx;
-        vay -= fa * ny;
-        vaz -= fa * nz;
-        vbx += fb * nx;
-        vby += fb * ny;
-        vbz += fb * nz;
+        vnLinear += linearGain * dl;
+        sumDl += dl;
         if (iso) {
           const ga = iA * dl,
             gb = iB * dl;
@@ -372,6 +371,12 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
         last = sw >= sweeps;
       if (softMet === 1 || settled || slow || last) break;
     }
+    vax -= mA * sumDl * nx;
+    vay -= mA * sumDl * ny;
+    vaz -= mA * sumDl * nz;
+    vbx += mB * sumDl * nx;
+    vby += mB * sumDl * ny;
+    vbz += mB * sumDl * nz;
     // Friction of the manifold at its anchor (t1, t2, then the twist about n), limited by mu sum(lambda_n).
     let sumLn = 0;
     for (let k = 0; k < m; k++) sumLn += LN[4 * i + k]!;
