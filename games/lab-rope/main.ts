@@ -107,6 +107,8 @@ let lostAt = Number.NaN;
 /** World time (s) at which the level was lost, and won; NaN until then. */
 let lostWorld = Number.NaN,
   wonWorld = Number.NaN;
+/** Real time (s) at which the level was won; NaN until then. */
+let wonAt = Number.NaN;
 /** Stars of the win's row turned gold so far, and the real time (s) the last one did. */
 let revealed = 0,
   revealedAt = 0;
@@ -143,6 +145,7 @@ function createWorld(): PhysicsWorld {
   lostAt = Number.NaN;
   lostWorld = Number.NaN;
   wonWorld = Number.NaN;
+  wonAt = Number.NaN;
   caughtAt.fill(Number.NaN);
   revealed = 0;
   push = 0;
@@ -173,6 +176,7 @@ function labStep(world: PhysicsWorld): void {
   if (before === 'playing' && game.outcome === 'won') {
     best[params.level - 1] = Math.max(best[params.level - 1]!, game.stars());
     wonWorld = world.time;
+    wonAt = performance.now() / 1000;
     sound.chime(784, 0.25);
     setTimeout(() => sound.chime(1046, 0.5), 160);
     const e = slotOf(scene.ball);
@@ -839,8 +843,10 @@ function drawBanner(now: number): void {
     const s = game.stars();
     const last = params.level === LEVELS.length;
     setBanner(last ? 'All levels done!' : 'In the basket!', 0x9ff0b8, 1);
-    // The stars won turn gold one at a time, each with a chime a step higher, swelling as it lands.
-    const due = Math.max(0, Math.min(s, Math.floor((shell.world.time - wonWorld - STAR_REVEAL_FIRST) / STAR_REVEAL_S) + 1));
+    // The stars won turn gold one at a time, each with a chime a step higher, swelling as it lands:
+    // on game time, or on the page's time where that is ahead (a game paused at the win still shows them).
+    const since = Math.max(shell.world.time - wonWorld, now - wonAt);
+    const due = Math.max(0, Math.min(s, Math.floor((since - STAR_REVEAL_FIRST) / STAR_REVEAL_S) + 1));
     if (due > revealed) {
       revealed = due;
       revealedAt = now;
