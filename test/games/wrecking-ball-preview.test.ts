@@ -121,10 +121,16 @@ describe('wrecking-ball: the swing preview', () => {
     expect(out.length).toBeGreaterThanOrEqual(18);
     expect(agree).toBeGreaterThanOrEqual(Math.ceil((5 / 6) * out.length));
     expect(median).toBeLessThan(1.1);
-    // Read, it helps: measured 24/27 first swings touch the structure aimed at first when the drags
-    // ignore it, 25/27 when those it shows going elsewhere are turned till it shows the aimed one (the
-    // two left: level 2's structure 3 behind structure 2, which the ball, let go over it, meets first).
-    // Bound: more than the blind drags (deterministic steps: the same counts every run).
-    expect(onTargetFollowed).toBeGreaterThan(onTarget);
+    // Read, it helps: of the drags at structures the ball can be aimed at past the others (all but
+    // level 2's structure 3, behind structure 2, which the ball, let go over it, meets first whichever
+    // way the preview turns it: there a blind drag's outcome is chance, and a change of the solver's
+    // rounding moved one such drag from one to the other), 23 of 24 first swings touch the aimed
+    // structure first when the drags ignore the preview and 24 of 24 when those it shows going
+    // elsewhere are turned till it shows the aimed one. Bound: more than the blind drags
+    // (deterministic steps: the same counts every run).
+    const aimable = (o: Outcome) => !o.label.startsWith('L2 s3 ');
+    const hits = (list: Outcome[]) => list.filter((o) => aimable(o) && o.touched === o.aimed).length;
+    expect(hits(followed)).toBeGreaterThan(hits(out));
+    expect(onTargetFollowed).toBeGreaterThanOrEqual(onTarget - 1);
   });
 });
