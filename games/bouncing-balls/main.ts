@@ -3110,7 +3110,7 @@ function updateStatus(): void {
   const turn = teachTurn.turn;
   const teach =
     turn === 3
-      ? `Each basket +${TIME_PER_BASKET} s · the hoop moves after ${round.perHoop}`
+      ? `Each basket +${TIME_PER_BASKET} s · the hoop moves every ${plural(round.perHoop, 'basket', 'baskets')}`
       : turn === 0
         ? touch
           ? `Pull a heap ball back to throw it: ${BALL_POINTS.heap} points, gold ${BALL_POINTS.gold}`

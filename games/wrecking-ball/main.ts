@@ -2840,7 +2840,7 @@ function hintText(): string {
     // The level's end, over the scene as the other games say it (the status line says it small);
     // once the player swings on, that those swings are for fun and the result stands.
     if (swingsUsed() > clearedWith.swings || clearedWith.tapped)
-      return `${clearedBanner()}\nSwinging for fun: the result stands. ${touch ? 'Tap' : 'Press L or'} Next level ▶`;
+      return `${clearedBanner()}\nSwinging for fun: the result stands. ${touch ? 'Tap' : 'Press L or'} Level ${handles.level + 1} ▶`;
     return clearedBanner();
   }
   if (aiming.piece !== 0 && aiming.dragged && onRun()) return 'Let go to aim the next swing: it goes as soon as this one has hit';
@@ -3030,7 +3030,7 @@ function frame(): void {
     const used = swingsUsed(),
       left = budget - used;
     status.textContent = cleared
-      ? `${clearedLine()} · final score ${banked + levelScore} · ${touch ? 'tap' : 'press L or'} Next level`
+      ? `${clearedLine()} · final score ${banked + levelScore} · ${touch ? 'tap' : 'press L or'} Level ${handles.level + 1} ▶`
       : reachedAt >= 0
         ? `Level ${handles.level} · target reached! · down ${f}/${n} · score ${banked + levelScore} (counting the fall${falling > 0 ? `: ${falling} still moving` : ''})`
         : `Level ${handles.level} · swings left ${left}/${budget} (★★★ in ${swingPar(handles.level)}) · down ${f}/${n} (clear at ${clearTarget(handles.pieces, handles.level)})${swingPhase()}${
