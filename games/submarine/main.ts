@@ -939,13 +939,16 @@ gauge.append(goal, readout);
 goal.after(Object.assign(document.createElement('span'), { textContent: ' · ' }));
 pageLayout().status.append(gauge);
 
-/** The end of a run over the scene: won or sunk, the time, the hull, the best, and a button to go again. */
+/**
+ * The end of a run over the scene: won or sunk, the time, the hull, the best, and a button to go again.
+ * Nearly opaque: the target's label drawn under it showed through a 0.88 one and mixed with its lines.
+ */
 const endCard = document.createElement('div');
 endCard.dataset.sceneOverlay = '';
 endCard.dataset.hud = 'end';
 endCard.style.cssText =
   'position: absolute; z-index: 4; left: 50%; top: 26%; transform: translate(-50%, -50%); width: min(88%, 400px); box-sizing: border-box;' +
-  'padding: 12px 16px; border-radius: 14px; background: rgba(4, 16, 30, 0.88); color: #e8f4ff; font: 16px/1.45 system-ui, sans-serif;' +
+  'padding: 12px 16px; border-radius: 14px; background: rgba(4, 16, 30, 0.97); color: #e8f4ff; font: 16px/1.45 system-ui, sans-serif;' +
   'text-align: center; pointer-events: none; display: none;';
 pageLayout().stage.append(endCard);
 /** The first-time hint over the top of the scene: what a glow, a beacon and par are worth. */
