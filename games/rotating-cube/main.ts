@@ -943,7 +943,8 @@ function sayBlocked(): void {
   blockedSaid = why;
   const want = FACE_NAMES[layout.faces[pads.pad] ?? -1];
   if (why === 'face' && want) showPop(`✗ This pad needs ${want} on top`, 1800, '#ffb4a8');
-  else if (why === 'slide') showPop(slidOnWords(), 2200, '#ffb4a8');
+  // The rule a slide breaks is new to a player: held long enough to read (a stranger lost it at 2.2 s).
+  else if (why === 'slide') showPop(slidOnWords(), 3500, '#ffb4a8');
 }
 
 /** What the pop says when a slide rests the cube on a pad that takes only a roll on. */
