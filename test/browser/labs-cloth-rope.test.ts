@@ -775,6 +775,13 @@ for (const [device, options] of [
         ny = (b.x - a.x) / len;
       return { from: (d: number) => ({ x: (a.x + b.x) / 2 + d * nx, y: (a.y + b.y) / 2 + d * ny }) };
     };
+    /** Starts the level again, paused. */
+    const resetPaused = () =>
+      g.page.evaluate(() => {
+        const w = window.game as unknown as RopeLab & { reset(): void };
+        w.reset();
+        w.paused = true;
+      });
     /** Cuts made and ropes holding the ball. */
     const cutState = () =>
       g.page.evaluate(() => {
@@ -972,11 +979,7 @@ for (const [device, options] of [
     });
 
     it('a swipe that stops just short of the rope still cuts it (14 px for a finger, 5 px for the mouse); a fast flick cuts it; a drag or flick begun on the ball pushes it and cuts nothing; a swipe begun beside the ball cuts', async () => {
-      await g.page.evaluate(() => {
-        const w = window.game as unknown as RopeLab & { reset(): void };
-        w.reset();
-        w.paused = true;
-      });
+      await resetPaused();
       // Across the rope's middle link, square to it, from 60 px away to `short` px before its line
       // (a stroke that never crosses it): before, only a crossing cut.
       const short = device === 'phone' ? 10 : 3;
@@ -1009,11 +1012,7 @@ for (const [device, options] of [
       // A fast flick across the rope cuts it however few pointer events it makes: from 60 px one side
       // of the middle link to 60 px the other in 20 ms, as a press and a release with no move between
       // (the mouse) or one move (a finger). Before, the stretch to the release was never tested.
-      await g.page.evaluate(() => {
-        const w = window.game as unknown as RopeLab & { reset(): void };
-        w.reset();
-        w.paused = true;
-      });
+      await resetPaused();
       const across = await middleLink();
       await flick(g.page, across.from(60), across.from(-60));
       expect(await cutState(), `${device}: a flick`).toEqual({ cuts: 1, holding: 0 });
@@ -1021,11 +1020,7 @@ for (const [device, options] of [
       // listed control "Drag ball: push the ball" (a fast drag from the ball counted as a cut, "cuts
       // 1", with the rope whole). From a point on the ball 0.12 m beside the rope's line, across it
       // 0.5 m up the rope, in 16 ms.
-      await g.page.evaluate(() => {
-        const w = window.game as unknown as RopeLab & { reset(): void };
-        w.reset();
-        w.paused = true;
-      });
+      await resetPaused();
       const onBall = await g.page.evaluate(() => {
         const w = window.game as unknown as RopeLab;
         const P = w.world.components.Position,
@@ -1043,11 +1038,7 @@ for (const [device, options] of [
       await flick(g.page, await toPage(g, onBall[0], onBall[1]), await toPage(g, onBall[2], onBall[3]));
       expect(await cutState(), `${device}: a flick from the ball`).toEqual({ cuts: 0, holding: 1 });
       // A drag from the ball's centre 1 m sideways (as a player pushes it): a push, no cut.
-      await g.page.evaluate(() => {
-        const w = window.game as unknown as RopeLab & { reset(): void };
-        w.reset();
-        w.paused = true;
-      });
+      await resetPaused();
       const ballAt = await g.page.evaluate(() => {
         const w = window.game as unknown as RopeLab;
         const b = w.ids().ball % 2 ** 25;
@@ -1057,11 +1048,7 @@ for (const [device, options] of [
       expect(await cutState(), `${device}: a drag from the ball`).toEqual({ cuts: 0, holding: 1 });
       // A swipe begun in the ring round the ball (14 px out from its edge, 35 degrees off the rope
       // beside it) across the rope just above the ball, not over the ball: a cut (it dragged the ball).
-      await g.page.evaluate(() => {
-        const w = window.game as unknown as RopeLab & { reset(): void };
-        w.reset();
-        w.paused = true;
-      });
+      await resetPaused();
       const ringSwipe = await g.page.evaluate(() => {
         const w = window.game as unknown as RopeLab;
         const P = w.world.components.Position,
