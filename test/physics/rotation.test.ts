@@ -136,7 +136,7 @@ describe("3D rigid rotation (Euler's equations)", () => {
    * so it magnifies any drift of E or |L|: the test of how well a scheme keeps Euler's equations.
    * Tolerance 1 %: measured 0.00 to 0.13 %. Staged in the world frame (the stages' w and q drifting
    * apart), RK2 was 10.9 % short and velocity Verlet 5.9 % long, explicit Euler 78 % short.
-   * (Implicit Euler is left out: it damps the motion by design, see implicitGyroscopicStep.)
+   * (Implicit Euler is left out: it damps the motion by design.)
    */
   test('intermediate-axis flip period matches 4 K(k) / lambda within 1 % under every explicit scheme at dt 1/60', () => {
     const I1 = 1,

@@ -1,4 +1,4 @@
-import { DEFAULT_MATERIAL } from '../world/components.js';
+import { DEFAULT_MATERIAL, type Vec3Store } from '../world/components.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { type Archetype, applyQueuedBirths, archetypes, bornSlotQueued, queuedPending } from './archetype.js';
 import { maxSpawnsPerStep } from './emitter-options.js';
@@ -126,24 +126,9 @@ export function flushBirths(world: PhysicsWorld): void {
   applyQueuedBirths(archetypes(world), S, q.mark, q.pend, n);
   // What bitecs' observers write when these components are added (create-world.ts); stores a world
   // allocates lazily may have no arrays yet: nothing to reset there.
-  const W = c.AngularVelocity,
-    F = c.Force,
-    T = c.Torque;
-  if (W.x.length > world.capacity) {
-    zeroAt(W.x, S, n);
-    zeroAt(W.y, S, n);
-    zeroAt(W.z, S, n);
-  }
-  if (F.x.length > world.capacity) {
-    zeroAt(F.x, S, n);
-    zeroAt(F.y, S, n);
-    zeroAt(F.z, S, n);
-  }
-  if (T.x.length > world.capacity) {
-    zeroAt(T.x, S, n);
-    zeroAt(T.y, S, n);
-    zeroAt(T.z, S, n);
-  }
+  zeroVecAt(c.AngularVelocity, S, n, world.capacity);
+  zeroVecAt(c.Force, S, n, world.capacity);
+  zeroVecAt(c.Torque, S, n, world.capacity);
   let kinds = 0;
   for (let k = 0; k < n; k++) kinds |= K[k]!;
   if (kinds !== 0) {
@@ -211,6 +196,14 @@ function putAt(T: Writable, S: Int32Array, V: ArrayLike<number>, n: number): voi
 /** T[S[k]] = 0 for k < n. */
 function zeroAt(T: Writable, S: Int32Array, n: number): void {
   for (let k = 0; k < n; k++) T[S[k]!] = 0;
+}
+
+/** v.x, v.y and v.z [S[k]] = 0 for k < n, when the store has arrays (longer than `capacity`; a lazily allocated one may have none yet). */
+function zeroVecAt(v: Vec3Store, S: Int32Array, n: number, capacity: number): void {
+  if (v.x.length <= capacity) return;
+  zeroAt(v.x, S, n);
+  zeroAt(v.y, S, n);
+  zeroAt(v.z, S, n);
 }
 
 /** T[S[k]] = from[EM[k]] for k < n: a field every particle takes from its emitter. */

@@ -1,5 +1,5 @@
 import { addComponent } from 'bitecs';
-import { DEFAULT_MATERIAL } from '../world/components.js';
+import { DEFAULT_MATERIAL, type Vec3Store } from '../world/components.js';
 import { NonFiniteStateError } from '../world/errors.js';
 import { createSlot, currentHandle } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
@@ -161,6 +161,14 @@ export function archetypeFor(world: PhysicsWorld, em: number): Archetype | undef
   return a !== undefined && prepareArchetype(world, a) ? a : undefined;
 }
 
+/** v.x, v.y and v.z [e] = 0, when the store has arrays that long (a lazily allocated one may have none yet). */
+function zeroVec(v: Vec3Store, e: number): void {
+  if (v.x.length <= e) return;
+  v.x[e] = 0;
+  v.y[e] = 0;
+  v.z[e] = 0;
+}
+
 /**
  * Spawns one particle of emitter `em` at (x, y, z) + shape offset with inherited velocity
  * (bx, by, bz) (already scaled), applying the capacity policy. `a` is the archetype of the emitter's
@@ -209,24 +217,9 @@ export function spawnOne(
     e = bornSlot(world, a);
     // What bitecs' observers write when these components are added (create-world.ts), then the
     // particle (stores a world allocates lazily may have no arrays yet: nothing to reset there).
-    const W = c.AngularVelocity,
-      F = c.Force,
-      T = c.Torque;
-    if (W.x.length > e) {
-      W.x[e] = 0;
-      W.y[e] = 0;
-      W.z[e] = 0;
-    }
-    if (F.x.length > e) {
-      F.x[e] = 0;
-      F.y[e] = 0;
-      F.z[e] = 0;
-    }
-    if (T.x.length > e) {
-      T.x[e] = 0;
-      T.y[e] = 0;
-      T.z[e] = 0;
-    }
+    zeroVec(c.AngularVelocity, e);
+    zeroVec(c.Force, e);
+    zeroVec(c.Torque, e);
     if (kind !== 0) {
       const mass = E.mass[em]!,
         m = mass > 0 ? mass : 1;

@@ -1,7 +1,7 @@
-import { addBody, setBoundary } from '../bodies/api.js';
 import { Rng } from '../math/rng.js';
 import { assertInRange, assertNonNegative, assertPositive } from '../validation/validate.js';
 import type { PhysicsWorld } from '../world/options.js';
+import { addBallsInBox } from './cubes.js';
 import { countAndSeed } from './options.js';
 import type { SceneDefinition } from './types.js';
 
@@ -126,21 +126,7 @@ export const ballsInBox: SceneDefinition<BallsInBoxOptions, BallsInBoxHandles> =
   build(world: PhysicsWorld, options: BallsInBoxOptions = {}): BallsInBoxHandles {
     if (world.dimensions !== 2) throw new RangeError(`balls-in-box: needs a 2D world, got dimensions ${world.dimensions}`);
     const layout = ballsInBoxLayout(options);
-    setBoundary(world, { min: layout.min, max: layout.max, restitution: layout.restitution, friction: layout.friction });
-    const balls = new Uint32Array(layout.count);
-    const p = layout.positions;
-    const pos = [0, 0];
-    for (let i = 0; i < layout.count; i++) {
-      pos[0] = p[2 * i]!;
-      pos[1] = p[2 * i + 1]!;
-      balls[i] = addBody(world, {
-        position: pos,
-        radius: layout.radius,
-        mass: layout.mass,
-        restitution: layout.restitution,
-        friction: layout.friction,
-      });
-    }
+    const balls = addBallsInBox(world, layout, 2);
     return { balls, layout };
   },
 };

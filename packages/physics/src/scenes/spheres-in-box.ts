@@ -1,5 +1,5 @@
-import { addBody, setBoundary } from '../bodies/api.js';
 import type { PhysicsWorld } from '../world/options.js';
+import { addBallsInBox } from './cubes.js';
 import { type JitteredBox3D, jitteredBox3D } from './jittered-grid.js';
 import type { SceneDefinition } from './types.js';
 
@@ -65,22 +65,7 @@ export const spheresInBox: SceneDefinition<SpheresInBoxOptions, SpheresInBoxHand
   build(world: PhysicsWorld, options: SpheresInBoxOptions = {}): SpheresInBoxHandles {
     if (world.dimensions !== 3) throw new RangeError(`spheres-in-box: needs a 3D world, got dimensions ${world.dimensions}`);
     const layout = spheresInBoxLayout(options);
-    setBoundary(world, { min: layout.min, max: layout.max, restitution: layout.restitution, friction: layout.friction });
-    const spheres = new Uint32Array(layout.count);
-    const p = layout.positions,
-      pos = [0, 0, 0];
-    for (let i = 0; i < layout.count; i++) {
-      pos[0] = p[3 * i]!;
-      pos[1] = p[3 * i + 1]!;
-      pos[2] = p[3 * i + 2]!;
-      spheres[i] = addBody(world, {
-        position: pos,
-        radius: layout.radius,
-        mass: layout.mass,
-        restitution: layout.restitution,
-        friction: layout.friction,
-      });
-    }
+    const spheres = addBallsInBox(world, layout, 3);
     return { spheres, layout };
   },
 };

@@ -31,6 +31,29 @@ function allocatable(type: Encoded | undefined, n: Encoded | undefined, path: st
 /** The most elements a snapshot's typed array may declare (2^28: 2 GB of Float64Array); more is damage. */
 const MAX_ELEMENTS = 2 ** 28;
 
+/**
+ * Whether a TANGENT_2D note's numbers are sound, for both the dry run and the restore: `len` and
+ * `upto` integers with 0 <= upto <= len, and `axis` 'x' or 'y'.
+ */
+function tangentNoteSound(e: { [key: string]: Encoded }): boolean {
+  const len = e.len as number,
+    upto = e.upto as number;
+  return Number.isInteger(len) && Number.isInteger(upto) && upto >= 0 && upto <= len && (e.axis === 'x' || e.axis === 'y');
+}
+
+/**
+ * Whether a TANGENT_2D note's rows written apart (`pairs`: row, value, row, value, ...) come in
+ * pairs, each row an integer in [0, upto).
+ */
+function tangentRowsSound(pairs: ArrayLike<number>, upto: number): boolean {
+  if (pairs.length % 2 !== 0) return false;
+  for (let k = 0; k < pairs.length; k += 2) {
+    const row = pairs[k]!;
+    if (!(Number.isInteger(row) && row >= 0 && row < upto)) return false;
+  }
+  return true;
+}
+
 export class Reader {
   /**
    * With `dry` set, `objectInto` writes nothing: it walks the encoding against the target as a restore
@@ -283,16 +306,11 @@ export class Reader {
   /** The dry run of `tangent`: the note and its rows must be sound, and the normals it reads stored as Float64Arrays long enough. */
   private checkTangent(enc: Record<string, Encoded>, key: string, e: { [key: string]: Encoded }, path: string): void {
     const src = enc[e.axis === 'x' ? 'ny' : 'nx'];
-    const len = e.len as number,
-      upto = e.upto as number;
+    const upto = e.upto as number;
     if (
       !(
-        Number.isInteger(len) &&
-        Number.isInteger(upto) &&
-        upto >= 0 &&
-        upto <= len &&
-        len <= MAX_ELEMENTS &&
-        (e.axis === 'x' || e.axis === 'y') &&
+        tangentNoteSound(e) &&
+        (e.len as number) <= MAX_ELEMENTS &&
         isTagged(src) &&
         src.$t === 'Float64Array' &&
         (src.len as number) >= upto
@@ -301,12 +319,8 @@ export class Reader {
       throw new RangeError(`restore: snapshot's ${path}.${key} is damaged`);
     if (e.rows !== undefined) {
       if (!isTagged(e.rows) || e.rows.$t !== 'Float64Array') throw new RangeError(`restore: snapshot's ${path}.${key} is damaged`);
-      const pairs = this.full(e.rows, `${path}.${key}.rows`);
-      if (pairs.length % 2 !== 0) throw new RangeError(`restore: snapshot's ${path}.${key} is damaged`);
-      for (let k = 0; k < pairs.length; k += 2) {
-        const row = pairs[k]!;
-        if (!(Number.isInteger(row) && row >= 0 && row < upto)) throw new RangeError(`restore: snapshot's ${path}.${key} is damaged`);
-      }
+      if (!tangentRowsSound(this.full(e.rows, `${path}.${key}.rows`), upto))
+        throw new RangeError(`restore: snapshot's ${path}.${key} is damaged`);
     }
   }
   objectInto(target: Record<string, unknown>, enc: Record<string, Encoded>, path: string, keep?: ReadonlySet<string>): void {
@@ -344,28 +358,11 @@ export class Reader {
       upto = e.upto as number,
       axis = e.axis;
     const src = axis === 'x' ? target.ny : target.nx;
-    if (
-      !(
-        Number.isInteger(len) &&
-        Number.isInteger(upto) &&
-        upto >= 0 &&
-        upto <= len &&
-        (axis === 'x' || axis === 'y') &&
-        src instanceof Float64Array &&
-        src.length >= upto
-      )
-    ) {
+    if (!(tangentNoteSound(e) && src instanceof Float64Array && src.length >= upto))
       throw new RangeError(`restore: snapshot's ${path} is damaged`);
-    }
     const pairs = e.rows === undefined ? null : isTagged(e.rows) ? this.full(e.rows, `${path}.rows`) : undefined;
-    if (pairs === undefined || (pairs !== null && !(pairs instanceof Float64Array && pairs.length % 2 === 0)))
+    if (pairs === undefined || (pairs !== null && !(pairs instanceof Float64Array && tangentRowsSound(pairs, upto))))
       throw new RangeError(`restore: snapshot's ${path} is damaged`);
-    if (pairs !== null) {
-      for (let k = 0; k < pairs.length; k += 2) {
-        const row = pairs[k]!;
-        if (!(Number.isInteger(row) && row >= 0 && row < upto)) throw new RangeError(`restore: snapshot's ${path} is damaged`);
-      }
-    }
     let out = target[key];
     if (!(out instanceof Float64Array && out.length === len)) {
       out = new Float64Array(len);

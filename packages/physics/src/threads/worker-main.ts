@@ -71,14 +71,6 @@ export const CONTROL = Object.freeze({
 export const COMMAND = Object.freeze({ RUN: 0, QUIT: 2 });
 
 /**
- * Port of a worker: the browser's worker global or Node's parentPort.
- * @category Threads
- */
-export interface WorkerPort {
-  postMessage(message: unknown): void;
-}
-
-/**
  * Message a pool posts to its workers.
  * @category Threads
  */
