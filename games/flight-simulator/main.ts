@@ -11,7 +11,8 @@
  * Fly through every ring (./course.ts) as fast as you can; a ring flown past to the side, left
  * behind, is missed (./course.ts leaveBehind; one laid ahead after a miss is laid ahead again
  * instead, so one over-correction costs one star); after a miss the course moves on (the
- * next ring is laid just ahead: ./course.ts relayAfterMiss); each ring missed adds MISS_PENALTY (10)
+ * next ring is laid just ahead: ./course.ts relayAfterMiss); a ring's first miss lays it ahead again
+ * to be scored with no penalty (./second-try.ts); each ring missed for good adds MISS_PENALTY (10)
  * s to the course clock and every second miss costs a star (three to start with, shown on the goal
  * line: ./course.ts courseStars), said in the banner and by a red glow round the scene the moment it
  * is missed. A ring the flight-path marker showed green is passed (./course.ts flyRings
@@ -137,7 +138,7 @@ import { FRAME_CAP, STEPS_PER_FRAME, slowMotion } from './pacing';
 import { nearFade } from './ring-fade';
 import { offScreenLabel } from './ring-pointer';
 import { createScenery, HORIZON_COLOUR, SCENERY_DETAIL, SUN_DIRECTION } from './scenery';
-import { secondTry } from './second-try';
+import { secondTry, tryBanner } from './second-try';
 import { clearPulse, createPulse, type Pulse, pressPulse, pulseOn, releasePulse } from './tap-latch';
 
 const params = {
@@ -176,10 +177,14 @@ const state = {
   elevator: 0,
   aileron: 0,
   rudder: 0,
-  /** Rings passed and missed (for good), and rings missed once and given a second try (./second-try.ts). */
+  /**
+   * Rings passed and missed (for good), rings missed once and given a second try, and rings passed on
+   * that second try (./second-try.ts: scored with no penalty).
+   */
   score: 0,
   missed: 0,
   again: 0,
+  secondPassed: 0,
   /** 'flying', then 'crashed' (into the ground or the sea) or 'done' (no ring left). */
   phase: 'flying' as 'flying' | 'crashed' | 'done',
   /** Time since the start, s of game time; stops when the course is done. */
@@ -204,6 +209,7 @@ function createWorld(): PhysicsWorld {
     score: 0,
     missed: 0,
     again: 0,
+    secondPassed: 0,
     phase: 'flying',
     time: 0,
     stalled: false,
@@ -590,16 +596,19 @@ function checkRings(time: number): void {
     if (result === 'passed') {
       state.score++;
       const last = nextRing(rings) < 0;
-      events.push({ text: last ? 'Last ring!' : `Ring ${ring + 1} ✓`, colour: '#7dff9a', time });
+      // Passed on its second try: a pass like any other, no penalty, said so (./second-try.ts).
+      const second = tried.has(ring);
+      if (second) state.secondPassed++;
+      events.push({ text: tryBanner({ ring, result }, { second, last }), colour: '#7dff9a', time });
       // Then, once the tick is read, which way the next ring lies: the turn to it is seen coming.
       if (!last) events.push({ text: '', colour: '#ffd166', time: time + NEXT_AFTER, next: nextRing(rings) });
       sound.chime(880, 0.18);
       setTimeout(() => sound.chime(1320, 0.3), 110);
     } else if (result === 'again') {
-      // A first miss: time on the clock, no star, and the ring comes round again.
+      // A first miss: no time, no star yet; the ring comes round again to be scored.
       state.again++;
       missedAt = time;
-      events.push({ text: `Missed ring ${ring + 1} · +${MISS_PENALTY} s · try it again`, colour: '#ff8a5a', time });
+      events.push({ text: tryBanner({ ring, result }), colour: '#ff8a5a', time });
       sound.chime(220, 0.4);
     } else {
       // A miss costs a star and time on the course clock, said at once in the banner and by the
@@ -607,8 +616,8 @@ function checkRings(time: number): void {
       state.missed++;
       missedAt = time;
       // The star is named only when this miss takes one (every second miss does: ./course.ts courseStars).
-      const star = courseStars(state.missed) < courseStars(state.missed - 1) ? ' · −1 ★' : '';
-      events.push({ text: `Missed ring ${ring + 1}${star} · +${MISS_PENALTY} s`, colour: '#ff8a5a', time });
+      const starLost = courseStars(state.missed) < courseStars(state.missed - 1);
+      events.push({ text: tryBanner({ ring, result }, { starLost }), colour: '#ff8a5a', time });
       sound.chime(220, 0.4);
     }
   }
@@ -703,7 +712,7 @@ let lastVsBest: 'first' | 'better' | 'not' = 'not';
 function finish(time: number): void {
   state.phase = 'done';
   const best = bestOf();
-  const total = courseTime(state.time, state.missed + state.again);
+  const total = courseTime(state.time, state.missed);
   lastVsBest = compareWithBest(best, state.score, total);
   // The first run is kept as the best to beat, but only a run that beats a kept best is praised.
   // A time past MAX_BEST_TIME would read back as none: not kept.
@@ -1088,14 +1097,13 @@ function distanceText(d: number): string {
 function updateGoal(): void {
   const n = nextRing(rings);
   const total = rings.length;
-  // The course clock: the time flown plus the misses' penalties, said beside it.
-  const slips = state.missed + state.again;
-  const penalty = slips > 0 ? ` (+${MISS_PENALTY * slips} s)` : '';
+  // The course clock: the time flown plus the penalties of the rings missed for good, said beside it.
+  const penalty = state.missed > 0 ? ` (+${MISS_PENALTY * state.missed} s)` : '';
   const stars = courseStars(state.missed);
-  const courseClock = `${clock(courseTime(state.time, slips))}${penalty} · ${'★'.repeat(stars)}${'☆'.repeat(3 - stars)}`;
+  const courseClock = `${clock(courseTime(state.time, state.missed))}${penalty} · ${'★'.repeat(stars)}${'☆'.repeat(3 - stars)}`;
   const distance = n < 0 ? '' : distanceText(Math.hypot(rings[n]!.x - at.x, rings[n]!.y - at.y, rings[n]!.z - at.z));
   // A ring missed once comes round again (./second-try.ts): the line says so while it is next, so the
-  // 10 s just added and the ring number not moving on read as the second try they are.
+  // ring number not moving on reads as the second try it is.
   const retry = n >= 0 && tried.has(n);
   const text =
     state.phase === 'crashed'
@@ -1119,7 +1127,7 @@ function updateHud(i: ReturnType<typeof instruments>): void {
   const speed = `${i.speed.toFixed(0)} m/s`;
   // The rings counted one way everywhere (the end card too: ./finish.ts finishCard): passed, missed
   // for good and still to fly, which add up to the course's rings. A first miss is not a ring missed
-  // (it comes round again: ./second-try.ts); the goal line says "second try" and its 10 s.
+  // (it comes round again: ./second-try.ts); the goal line says "second try".
   const toGo = rings.filter((r) => r.status === 'ahead').length;
   const missedNote = state.missed > 0 ? ` · ${state.missed} missed` : '';
   // The height above the ground (or the sea) under the aircraft, what keeps it off the hills: "alt"
@@ -1150,7 +1158,9 @@ function updateHud(i: ReturnType<typeof instruments>): void {
   // After a crash the card waits CRASH_CARD_MS, so that the explosion is seen first.
   const waiting = state.phase === 'crashed' && performance.now() - crashWall < CRASH_CARD_MS;
   const card =
-    state.phase === 'flying' || waiting ? '' : `${state.phase} ${state.score} ${state.missed} ${state.again} ${state.time} ${lastVsBest}`;
+    state.phase === 'flying' || waiting
+      ? ''
+      : `${state.phase} ${state.score} ${state.missed} ${state.secondPassed} ${state.time} ${lastVsBest}`;
   if (card === shownCard) return;
   shownCard = card;
   if (card === '') {
@@ -1193,7 +1203,7 @@ function showFinish(): void {
     passed: state.score,
     total: rings.length,
     missed: state.missed,
-    again: state.again,
+    again: state.secondPassed,
     flown: state.time,
     vsBest: lastVsBest,
     best: bestOf(),
