@@ -134,6 +134,7 @@ import {
 import { createCrash } from './crash';
 import { clockText, courseName, finishCard, LAST_SEED, nextSeed } from './finish';
 import { clearOfBox, labelClearOf, type ScreenBox } from './label-place';
+import { bearingAfterLetGo, letGoCue, runOnTurn } from './let-go';
 import { FRAME_CAP, STEPS_PER_FRAME, slowMotion } from './pacing';
 import { nearFade } from './ring-fade';
 import { offScreenLabel } from './ring-pointer';
@@ -1895,6 +1896,43 @@ function markPath(): void {
   marker.style.filter = 'drop-shadow(0 0 3px rgba(0, 0, 0, 0.7))';
 }
 
+/**
+ * "Let go now" under the path marker (./let-go.ts): shown while a held bank, let go now, would end
+ * the turn on the next ring (the wings roll level but the turn runs on meanwhile, about 6 degrees
+ * from a steep bank: let go when the ring is straight ahead and the aircraft swings past it).
+ */
+const letGoEl = overlay(
+  'display: none; padding: 2px 10px; border-radius: 10px; background: rgba(10, 36, 18, 0.88); color: #5dff8a; font: 700 15px system-ui, sans-serif; white-space: nowrap;',
+);
+letGoEl.dataset.hud = 'let-go';
+letGoEl.textContent = 'Let go now';
+/** Whether the "let go now" cue shows now (tests). */
+let letGoShown = false;
+
+/** Shows or hides the "let go now" cue for the frame (./let-go.ts letGoCue), under the marker or, with it off screen, mid-scene. */
+function cueLetGo(): void {
+  const i = nextRing(rings);
+  const world = shell.world,
+    e = handles.body,
+    V = world.components.Velocity;
+  const speed = Math.hypot(V.x[e]!, V.y[e]!, V.z[e]!);
+  let on = false;
+  if (i >= 0 && state.phase === 'flying' && params.assist && speed > 1 && !holding) {
+    const r = rings[i]!;
+    const runOn = runOnTurn(motion.bank, motion.rollRate, speed);
+    const after = bearingAfterLetGo(r.x - now[0]!, r.z - now[2]!, Math.atan2(V.z[e]!, V.x[e]!), runOn);
+    // The stick's own deflection (not its smoothed input, which eases out after the finger lifts), or
+    // a bank key's ramped input: the cue goes the moment the pilot lets go.
+    on = letGoCue(after, runOn, clamp1(keyInput.roll + stickInput.x));
+  }
+  letGoShown = on;
+  letGoEl.style.display = on ? 'block' : 'none';
+  if (!on) return;
+  const atMarker = marker.style.display === 'block';
+  letGoEl.style.left = `${atMarker ? pathAim.x : app.canvas.clientWidth / 2}px`;
+  letGoEl.style.top = `${atMarker ? pathAim.y + MARKER_HALF[1] + 14 : app.canvas.clientHeight / 2}px`;
+}
+
 // ---- Camera, every frame ------------------------------------------------------------------------
 
 const p3 = [0, 0, 0],
@@ -2058,6 +2096,7 @@ function frame(alpha = 1): void {
   paintRings(world.time);
   drawGuide(at);
   markPath();
+  cueLetGo();
   showWarning(world.time);
   measurePlane();
   pointToNextRing();
@@ -2219,6 +2258,8 @@ shell.expose({
     bankTrace = on ? [] : null;
     return bankTrace;
   },
+  /** Whether the "let go now" cue shows (./let-go.ts letGoCue). */
+  letGo: () => letGoShown,
   /** The pilot's stick input now (after the response curve), x right, y up. */
   stickInput: () => ({ ...stickInput }),
   /** Speed, altitude, attitude, heading and the wing's angle of attack now (m/s, m, degrees). */
