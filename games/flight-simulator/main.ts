@@ -1303,7 +1303,10 @@ function drawCockpit(on: boolean, i: ReturnType<typeof instruments>): void {
   shownAttitude.visible = on;
   liftOffPanel(on ? cockpit.panelTop() : 0);
   if (!on) return;
-  cockpit.draw({ speed: i.speed, altitude: i.altitude, heading: i.heading, climb: i.climb, throttle: state.throttle });
+  // The heading to the next ring from the aircraft (the compass's bug), degrees in [0, 360).
+  const n = nextRing(rings);
+  const ring = n < 0 ? undefined : ((Math.atan2(rings[n]!.z - now[2]!, rings[n]!.x - now[0]!) * 180) / Math.PI + 360) % 360;
+  cockpit.draw({ speed: i.speed, altitude: i.altitude, heading: i.heading, ring, climb: i.climb, throttle: state.throttle });
   const slot = cockpit.attitudeSlot();
   horizon.canvas.style.left = `${slot.x}px`;
   horizon.canvas.style.top = `${slot.y - slot.size / 2}px`;
