@@ -1504,8 +1504,8 @@ describe('projects', () => {
       ring1,
       { unpause: false, maxFrames: 3600 },
     );
-    // A first miss: 10 s, no star, and the ring comes round again (second-try.ts).
-    expect(missed).toMatchObject({ status: 'ahead', missed: 0, score: 0, banner: 'Missed ring 1 · +10 s · try it again' });
+    // A first miss: no time, no star, and the ring comes round again to be scored (second-try.ts).
+    expect(missed).toMatchObject({ status: 'ahead', missed: 0, score: 0, banner: 'Missed ring 1 · fly it again to score it' });
     // Counted when it had fallen behind: flown on past its plane, at 110 to 170 m/s for 1.5 s at least.
     expect(missed.past).toBeGreaterThan(150);
     // The course moved on: ring 1, for its second try, now lies ahead of the aircraft (along +x,
@@ -1614,8 +1614,8 @@ describe('projects', () => {
         const stars = (goal.match(/★/g) ?? []).length;
         // The readout counts rings: passed, missed for good and to go, adding up to the course's (a
         // stranger read "Ring 4 ✓" over "rings 3/10 · missed 2", the misses counted with a second
-        // try's first one). The clock's penalty counts every miss (10 s each); the stars, the misses
-        // for good (a first miss gives the ring a second try: second-try.ts).
+        // try's first one). The clock's penalty and the stars count the misses for good (10 s each;
+        // a first miss gives the ring a second try at no cost: second-try.ts).
         const st = (window.game as unknown as { state: { missed: number; again: number } }).state;
         const forGood = st.missed;
         if (read && missed !== forGood) hud.bad.push(`missed: ${said}`);
@@ -1623,7 +1623,7 @@ describe('projects', () => {
           hud.bad.push(`rings do not add up: ${said}`);
         if (goal.includes('★') || goal.includes('☆')) {
           if (stars !== 3 - Math.ceil(forGood / 2)) hud.bad.push(`stars: ${said}`);
-          if (Number(goal.match(/\(\+(\d+) s\)/)?.[1] ?? 0) !== 10 * (forGood + st.again)) hud.bad.push(`penalty: ${said}`);
+          if (Number(goal.match(/\(\+(\d+) s\)/)?.[1] ?? 0) !== 10 * forGood) hud.bad.push(`penalty: ${said}`);
         }
         const next = goal.match(/ring (\d+) of/)?.[1];
         if (next && Number(next) !== rings + forGood + 1) hud.bad.push(`next ring: ${said}`);
@@ -1634,7 +1634,7 @@ describe('projects', () => {
         }
         if (banner.startsWith('Missed')) {
           hud.seen.push('miss');
-          if (banner.includes('try it again') ? st.again < 1 : missed < 1) hud.bad.push(`miss: ${said}`);
+          if (banner.includes('fly it again') ? st.again < 1 : missed < 1) hud.bad.push(`miss: ${said}`);
         }
         if (note) {
           hud.seen.push('note');
