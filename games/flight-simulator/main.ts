@@ -22,7 +22,9 @@
  * on the screen (at least OUTLINE_LEAST px in radius, so a ring far off or edge on still reads), a label
  * above it (clear of the ring and of the marker; an edge arrow when it is out of view), and a flight-path
  * marker where the aircraft's path, curved by its turn and climb, meets the next ring's plane if the
- * pilot lets go now (green when it is inside the ring). The flight waits for the pilot's first input
+ * pilot lets go now (green when it is inside the ring); while a bank is held, "Let go of ← now"
+ * under it when letting go then ends the turn on the ring (./let-go.ts), and in the cockpit view the
+ * compass has a bug at the ring's heading. The flight waits for the pilot's first input
  * at the start and while the first lesson's tip (ring 2: a plane turns by banking) is read (on a
  * phone the stick glows meanwhile); the later lessons' tips (rings 3, 4) show while it flies on, and
  * from ring 5 to the last the coach (./coach.ts) says where each ring lies and what to do. A ring
@@ -1908,7 +1910,6 @@ const letGoEl = overlay(
   'display: none; padding: 2px 10px; border-radius: 10px; background: rgba(10, 36, 18, 0.88); color: #5dff8a; font: 700 15px system-ui, sans-serif; white-space: nowrap;',
 );
 letGoEl.dataset.hud = 'let-go';
-letGoEl.textContent = 'Let go now';
 /** Whether the "let go now" cue shows now (tests). */
 let letGoShown = false;
 
@@ -1931,6 +1932,9 @@ function cueLetGo(): void {
   letGoShown = on;
   letGoEl.style.display = on ? 'block' : 'none';
   if (!on) return;
+  // Named for what is held: a bank key's arrow (a climb key may stay held), or the stick.
+  const text = stickInput.x !== 0 ? 'Let go now' : `Let go of ${keyInput.roll > 0 ? '→' : '←'} now`;
+  if (letGoEl.textContent !== text) letGoEl.textContent = text;
   const atMarker = marker.style.display === 'block';
   letGoEl.style.left = `${atMarker ? pathAim.x : app.canvas.clientWidth / 2}px`;
   letGoEl.style.top = `${atMarker ? pathAim.y + MARKER_HALF[1] + 14 : app.canvas.clientHeight / 2}px`;
