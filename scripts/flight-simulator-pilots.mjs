@@ -18,6 +18,9 @@
 //   answers late. Prints how often it reversed the bank key.
 // - `marker`: the same stranger steering by the game's flight-path marker (where the aircraft
 //   crosses the ring's plane if it lets go now) instead of the ring's bearing.
+// - `cue`: the `keys` stranger who also heeds the game's "Let go of ← now" (let-go.ts letGoCue, seen
+//   CUE_REACTION s late): lets go of the bank key when it shows and keeps off it while the wings
+//   level (1 s), then steers on as `keys` does.
 // After a miss the course moves on as in the game (course.ts relayAfterMiss; env RELAY=0 flies
 // without it), a ring's first miss laying that ring ahead again for a second try (second-try.ts; env
 // SECOND=0 flies without), and the time from each miss to the next ring passed is printed (median, max).
@@ -29,12 +32,15 @@ import { importSource } from './build.mjs';
 /** The naive pilot's reaction to a new ring, s (env REACTION, default 2), and the lag of what it steers on, s. */
 const REACTION = Number(process.env.REACTION ?? 2);
 const LAG = 0.5;
+/** How late the `cue` pilot sees the let-go cue, s (a player's reaction: let-go.ts LET_GO_LEAD). */
+const CUE_REACTION = 0.2;
 const fs = await importSource(
   'flight-simulator-pilots',
   [
     "export * from './games/flight-simulator/course.ts';",
     "export * from './games/flight-simulator/assist.ts';",
     "export * from './games/flight-simulator/second-try.ts';",
+    "export * from './games/flight-simulator/let-go.ts';",
     "export { createPhysicsWorld, setBodyThrust, setControlDeflection, step } from '@bitphysics/physics';",
     "export { AIRCRAFT, aircraft, aircraftLevelDrag, terrainHeight } from '@bitphysics/projects';",
   ].join('\n'),
@@ -92,6 +98,21 @@ const pilots = {
   // crosses the ring's plane if it lets go now, course.ts predictThroughRing), as it was LAG s
   // before: holds the key towards the ring while the marker is more than a third of the radius off
   // its centre that way, else lets go.
+  cue: (args) => {
+    const { keys, dt, cueSeen, start } = args;
+    if (keys.wait > 0) {
+      keys.wait -= dt;
+      keys.roll = fs.rampKey(keys.roll, 0, dt, fs.BANK_KEY_RAMP);
+      const pitch = pilots.keys({ ...args, keys: { roll: 0, pitch: keys.pitch } }).pitch;
+      keys.pitch = pitch;
+      return { roll: keys.roll, pitch, throttle: start };
+    }
+    if (keys.roll !== 0 && cueSeen) {
+      keys.wait = 1;
+      return pilots.cue(args);
+    }
+    return pilots.keys(args);
+  },
   marker: ({ seenMarker, since, start, keys, dt }) => {
     const ready = since >= 1 && seenMarker;
     const dead = fs.RING_RADIUS / 3;
@@ -159,10 +180,15 @@ const fly = (seed, pilot) => {
           up: ring.y - through.point[1],
         }
       : null;
-    history.push({ ring: n, bearing, elevation: Math.atan2(dy, far) - s.path, far: Math.hypot(far, dy), marker });
+    // The let-go cue as the game shows it (let-go.ts), for the bank keys' input now.
+    const runOn = fs.runOnTurn(s.bank, s.rollRate, Math.hypot(V.x[e], V.y[e], V.z[e]));
+    const cue = fs.letGoCue(fs.bearingAfterLetGo(dx, dz, Math.atan2(V.z[e], V.x[e]), runOn), runOn, keys.roll);
+    history.push({ ring: n, bearing, elevation: Math.atan2(dy, far) - s.path, far: Math.hypot(far, dy), marker, cue });
     const back = history[history.length - 1 - Math.round(LAG / world.dt)];
     const seen = back && back.ring === n ? back : null;
-    const c0 = pilot({ s, ring, P, e, trim, start, seen, seenMarker: seen?.marker ?? null, since, keys, dt: world.dt });
+    const cueBack = history[history.length - 1 - Math.round(CUE_REACTION / world.dt)];
+    const cueSeen = !!cueBack && cueBack.ring === n && cueBack.cue;
+    const c0 = pilot({ s, ring, P, e, trim, start, seen, seenMarker: seen?.marker ?? null, since, keys, dt: world.dt, cueSeen });
     // The ground floor as the game keeps it (assist.ts floorPath; the sea at 60 m).
     const floor = fs.floorPath([P.x[e], P.y[e], P.z[e]], [V.x[e], V.y[e], V.z[e]], (x, z) =>
       Math.max(60, fs.terrainHeight(h.terrain, x, z)),
@@ -208,8 +234,8 @@ const fly = (seed, pilot) => {
 
 /** The pilots to fly (env PILOTS, comma-separated; default all). */
 const only = process.env.PILOTS?.split(',');
-const totals = { scripted: 0, naive: 0, keys: 0, marker: 0 };
-const tries = { scripted: 0, naive: 0, keys: 0, marker: 0 };
+const totals = { scripted: 0, naive: 0, keys: 0, cue: 0, marker: 0 };
+const tries = { scripted: 0, naive: 0, keys: 0, cue: 0, marker: 0 };
 for (const seed of chosen)
   for (const [name, pilot] of Object.entries(pilots).filter(([name]) => !only || only.includes(name))) {
     const rings = fly(seed, pilot);
@@ -217,7 +243,7 @@ for (const seed of chosen)
     totals[name] += passed;
     tries[name] += rings.tries;
     console.log(
-      `seed ${seed} ${name.padEnd(8)} ${passed}/10  ${rings.map((r) => (r.status === 'passed' ? 'P' : r.status === 'missed' ? 'm' : '.')).join('')}  second tries ${rings.tries}${name === 'keys' ? `  bank reversals ${rings.reversals}` : ''}`,
+      `seed ${seed} ${name.padEnd(8)} ${passed}/10  ${rings.map((r) => (r.status === 'passed' ? 'P' : r.status === 'missed' ? 'm' : '.')).join('')}  second tries ${rings.tries}${name === 'keys' || name === 'cue' ? `  bank reversals ${rings.reversals}` : ''}`,
     );
   }
 for (const [name, n] of Object.entries(totals))

@@ -15,7 +15,8 @@
  *   `ASSIST.maxPath` (45 degrees: no loop, no vertical dive); the rest of the elevator is a path
  *   hold that asks for `ASSIST.maxClimb` times the stick (pulling harder in a bank to keep the
  *   height). Let go, the path hold alone flies the aircraft level.
- * - Rudder: as held, plus what cancels the sideslip (a coordinated turn).
+ * - Rudder: as held, plus what cancels the sideslip (a coordinated turn) and a yaw damper that
+ *   steadies the nose once a turn is let go (`ASSIST.yawDamping`).
  * - Throttle: the pilot's alone; the assist never moves it, so the stick steers without changing the
  *   engine (a climb trades speed for height, a dive the other way, as the physics has it).
  * - A wing angle of attack past `ASSIST.alphaLimit` is not asked for: the elevator eases off before
@@ -137,6 +138,13 @@ export const ASSIST = Object.freeze({
   alphaGain: 8,
   /** Rudder per radian of sideslip (1/rad): turns the nose into the air. */
   sideslipGain: 3,
+  /**
+   * Rudder per rad/s of yaw rate beyond a coordinated turn's (g sin(bank) cos(pitch) / V), s: a yaw
+   * damper. As a turn is let go the wings roll level and the nose would swing back and forth about
+   * its new heading, 4.5 degrees on the compass over 2 s (the cockpit view's whole scene with it);
+   * with it, under 1.5. It fades out while a rudder key is held, so it never fights the pedals.
+   */
+  yawDamping: 4,
   /**
    * Rudder per unit of aileron: cancels the ailerons' adverse yaw, so the nose swings into the turn
    * as the wings roll (without it the nose first swung 0.6 degrees the other way over 0.4 s).
@@ -363,7 +371,10 @@ export function assist(s: FlightState, input: PilotInput, state: AssistState, dt
   // Angle of attack limit: past it, nose-up elevator is taken off (never beyond what brings it back).
   if (s.alpha > A.alphaLimit) elevator = Math.min(elevator, -A.alphaGain * (s.alpha - A.alphaLimit));
   elevator = clamp(elevator, -1, 1);
-  const rudder = clamp(input.yaw + A.sideslipGain * s.sideslip + A.aileronRudder * aileron, -1, 1);
+  const yaw = clamp(input.yaw, -1, 1);
+  const coordinated = s.speed > 1 ? (9.81 * Math.sin(s.bank) * Math.cos(s.pitch)) / s.speed : 0;
+  const damper = A.yawDamping * (1 - Math.abs(yaw)) * (s.yawRate - coordinated);
+  const rudder = clamp(yaw + A.sideslipGain * s.sideslip + A.aileronRudder * aileron - damper, -1, 1);
   return { aileron, elevator, rudder };
 }
 

@@ -1,7 +1,8 @@
 /**
  * The flight simulator's cockpit, drawn over the scene in the cockpit view: the canopy's frame (a
  * bow across the top, a post down each side) and the instrument panel across the bottom, with round
- * gauges: airspeed, altimeter, heading (a compass card turning under a fixed lubber line) and
+ * gauges: airspeed, altimeter, heading (a compass card turning under a fixed lubber line, with a
+ * green bug at the next ring's heading) and
  * vertical speed, and the engine's throttle as a bar. The attitude indicator (./attitude-indicator.ts)
  * is placed in the middle of the panel by the page. Each gauge has its name and its reading in digits
  * under the needle, in white on the panel's dark grey (contrast above 12:1). DOM only (a 2D canvas).
@@ -15,6 +16,11 @@ export interface CockpitReadings {
   altitude: number;
   /** Heading, degrees, 0 to 360. */
   heading: number;
+  /**
+   * The heading to the next ring, degrees, 0 to 360 (absent: none): a bug on the compass's rim (the
+   * narrow screen's glare shield names it), so a turn is flown until the bug is under the lubber line.
+   */
+  ring?: number;
   /** Vertical speed, m/s, + up (the dial reads -30 to 30). */
   climb: number;
   /** Throttle, fraction of full, [0, 1]. */
@@ -120,8 +126,8 @@ export function createCockpit(stage: HTMLElement, attitudeSize: number): Cockpit
     g.textBaseline = 'middle';
   }
 
-  /** The compass: a card marked every 30 degrees (N, E, S, W) turned by the heading under a fixed mark at the top. */
-  function compass(g: CanvasRenderingContext2D, x: number, y: number, r: number, heading: number): void {
+  /** The compass: a card marked every 30 degrees (N, E, S, W) turned by the heading under a fixed mark at the top, and the ring's bug (`ring`, degrees) on its rim. */
+  function compass(g: CanvasRenderingContext2D, x: number, y: number, r: number, heading: number, ring?: number): void {
     dialFace(g, x, y, r);
     g.textAlign = 'center';
     g.textBaseline = 'middle';
@@ -140,6 +146,22 @@ export function createCockpit(stage: HTMLElement, attitudeSize: number): Cockpit
         g.font = `700 ${Math.max(8, Math.round(r * 0.18))}px system-ui, sans-serif`;
         g.fillText(name, x + Math.cos(a) * r * 0.6, y + Math.sin(a) * r * 0.6);
       }
+    }
+    if (ring !== undefined && Number.isFinite(ring)) {
+      // The ring's bug: a green notch on the card's rim at the ring's heading, turning with the card.
+      const a = (ring - heading - 90) * DEG,
+        c = Math.cos(a),
+        sn = Math.sin(a);
+      g.fillStyle = '#5dff8a';
+      g.strokeStyle = '#0c0f13';
+      g.lineWidth = 1.5;
+      g.beginPath();
+      g.moveTo(x + c * r * 0.74, y + sn * r * 0.74);
+      g.lineTo(x + c * r * 0.98 - sn * r * 0.13, y + sn * r * 0.98 + c * r * 0.13);
+      g.lineTo(x + c * r * 0.98 + sn * r * 0.13, y + sn * r * 0.98 - c * r * 0.13);
+      g.closePath();
+      g.fill();
+      g.stroke();
     }
     // The lubber line: a fixed triangle at the top.
     g.fillStyle = '#ffd166';
@@ -241,7 +263,7 @@ export function createCockpit(stage: HTMLElement, attitudeSize: number): Cockpit
     drawn.push({ name: 'altitude', x: w / 2 + gap, y: cy, r, value: rd.altitude });
     if (!narrow) {
       const far = gap + 2 * r + 16;
-      compass(g, w / 2 - far, cy, r, rd.heading);
+      compass(g, w / 2 - far, cy, r, rd.heading, rd.ring);
       drawn.push({ name: 'heading', x: w / 2 - far, y: cy, r, value: rd.heading });
       gauge(g, 'CLIMB m/s', w / 2 + far, cy, r, {
         from: -30,
@@ -258,7 +280,8 @@ export function createCockpit(stage: HTMLElement, attitudeSize: number): Cockpit
       g.fillStyle = '#ffffff';
       g.font = '700 13px ui-monospace, Menlo, Consolas, monospace';
       g.textAlign = 'center';
-      g.fillText(`HDG ${String(Math.round(rd.heading) % 360).padStart(3, '0')}°`, w / 2, top - 2);
+      const hdg = (d: number) => `${String(Math.round(d) % 360).padStart(3, '0')}°`;
+      g.fillText(`HDG ${hdg(rd.heading)}${rd.ring === undefined ? '' : ` · RING ${hdg(rd.ring)}`}`, w / 2, top - 2);
       drawn.push({ name: 'heading', x: w / 2, y: top - 2, r: 0, value: rd.heading });
     }
     // The throttle: a bar at the panel's right edge (the left one on a narrow screen would meet the speed gauge).

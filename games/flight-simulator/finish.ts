@@ -28,7 +28,7 @@ export interface CourseResult {
   total: number;
   /** Rings missed for good (integer >= 0). */
   missed: number;
-  /** Rings missed once and flown again (./second-try.ts; integer >= 0, default 0): time, no star. */
+  /** Rings passed on their second try after a first miss (./second-try.ts; integer >= 0, default 0): scored, no penalty. */
   again?: number;
   /** Time flown, s of game time (>= 0), without the misses' penalties. */
   flown: number;
@@ -45,9 +45,9 @@ export interface CourseResult {
 export interface FinishCard {
   /** 'Course 2 complete!' (every ring passed) or 'Course 2 over'. */
   title: string;
-  /** The result: rings passed and missed for good, the course time (m:ss, penalties in) and the stars: "9 of 10 rings passed · 1 missed · 1:40  ★★☆". */
+  /** The result: rings passed (and how many on a second try), missed for good, the course time (m:ss, penalties in) and the stars: "9 of 10 rings passed (1 on a 2nd try) · 1 missed · 1:40  ★★☆". */
   result: string;
-  /** The time's sum when a ring was missed ('' otherwise): "Time 1:33 + 50 s penalty (5 misses × 10 s) = 2:23"; and the comparison with the best. */
+  /** The time's sum when a ring was missed for good ('' otherwise): "Time 1:33 + 50 s penalty (5 misses × 10 s) = 2:23"; and the comparison with the best. */
   detail: string;
   best: string;
   /** The stars earned, 0 to 3 (./course.ts courseStars). */
@@ -63,9 +63,9 @@ export function clockText(t: number): string {
 }
 
 /**
- * The finish card for `r` (see CourseResult): the course time is `flown` plus MISS_PENALTY s per
- * miss, a second try's first miss included (./course.ts courseTime); the stars count the misses for
- * good only.
+ * The finish card for `r` (see CourseResult): the course time is `flown` plus MISS_PENALTY s per ring
+ * missed for good (./course.ts courseTime); a ring passed on its second try is a pass, with no penalty,
+ * named in the result; the stars count the misses for good.
  * @throws RangeError on counts that are not whole numbers in range, or a flown time that is negative or not finite.
  */
 export function finishCard(r: CourseResult): FinishCard {
@@ -74,24 +74,23 @@ export function finishCard(r: CourseResult): FinishCard {
       `finishCard: passed and total must be whole numbers with 0 <= passed <= total and total >= 1, got ${r.passed}, ${r.total}`,
     );
   const again = r.again ?? 0;
-  if (!(Number.isInteger(again) && again >= 0)) throw new RangeError(`finishCard: again must be an integer >= 0, got ${again}`);
-  const slips = r.missed + again;
-  const total = courseTime(r.flown, slips);
+  if (!(Number.isInteger(again) && again >= 0 && again <= r.passed))
+    throw new RangeError(`finishCard: again must be an integer in [0, passed], got ${again}`);
+  const total = courseTime(r.flown, r.missed);
   const stars = courseStars(r.missed);
   const starText = '★'.repeat(stars) + '☆'.repeat(3 - stars);
   const keys = !r.touch;
   const course = courseName(r.seed, true);
-  // A ring missed and then flown on its second try is passed, yet its first miss cost 10 s: the sum
-  // says so, or the misses counted would not match the rings missed.
-  const tries = again > 0 ? ', second tries included' : '';
-  const penalty = `${MISS_PENALTY * slips} s penalty (${slips} miss${slips === 1 ? '' : 'es'} × ${MISS_PENALTY} s${tries})`;
+  const penalty = `${MISS_PENALTY * r.missed} s penalty (${r.missed} miss${r.missed === 1 ? '' : 'es'} × ${MISS_PENALTY} s)`;
+  // Rings passed on a second try are named, so that a first miss seen in the banner is accounted for.
+  const second = again > 0 ? ` (${again} on a 2nd try)` : '';
   // Passed and missed counted as the readout counts them (rings, not misses).
   const lost = r.missed > 0 ? ` · ${r.missed} missed` : '';
   return {
     title: r.passed === r.total ? `${course} complete!` : `${course} over`,
-    result: `${r.passed} of ${r.total} rings passed${lost} · ${clockText(total)}  ${starText}`,
+    result: `${r.passed} of ${r.total} rings passed${second}${lost} · ${clockText(total)}  ${starText}`,
     // The penalty is whole seconds, so the floored times add up.
-    detail: slips > 0 ? `Time ${clockText(r.flown)} + ${penalty} = ${clockText(total)}` : '',
+    detail: r.missed > 0 ? `Time ${clockText(r.flown)} + ${penalty} = ${clockText(total)}` : '',
     best:
       r.vsBest === 'better'
         ? 'A new best for this course!'

@@ -11,7 +11,8 @@
  * Fly through every ring (./course.ts) as fast as you can; a ring flown past to the side, left
  * behind, is missed (./course.ts leaveBehind; one laid ahead after a miss is laid ahead again
  * instead, so one over-correction costs one star); after a miss the course moves on (the
- * next ring is laid just ahead: ./course.ts relayAfterMiss); each ring missed adds MISS_PENALTY (10)
+ * next ring is laid just ahead: ./course.ts relayAfterMiss); a ring's first miss lays it ahead again
+ * to be scored with no penalty (./second-try.ts); each ring missed for good adds MISS_PENALTY (10)
  * s to the course clock and every second miss costs a star (three to start with, shown on the goal
  * line: ./course.ts courseStars), said in the banner and by a red glow round the scene the moment it
  * is missed. A ring the flight-path marker showed green is passed (./course.ts flyRings
@@ -21,7 +22,9 @@
  * on the screen (at least OUTLINE_LEAST px in radius, so a ring far off or edge on still reads), a label
  * above it (clear of the ring and of the marker; an edge arrow when it is out of view), and a flight-path
  * marker where the aircraft's path, curved by its turn and climb, meets the next ring's plane if the
- * pilot lets go now (green when it is inside the ring). The flight waits for the pilot's first input
+ * pilot lets go now (green when it is inside the ring); while a bank is held, "Let go of ← now"
+ * under it when letting go then ends the turn on the ring (./let-go.ts), and in the cockpit view the
+ * compass has a bug at the ring's heading. The flight waits for the pilot's first input
  * at the start and while the first lesson's tip (ring 2: a plane turns by banking) is read (on a
  * phone the stick glows meanwhile); the later lessons' tips (rings 3, 4) show while it flies on, and
  * from ring 5 to the last the coach (./coach.ts) says where each ring lies and what to do. A ring
@@ -133,11 +136,12 @@ import {
 import { createCrash } from './crash';
 import { clockText, courseName, finishCard, LAST_SEED, nextSeed } from './finish';
 import { clearOfBox, labelClearOf, type ScreenBox } from './label-place';
+import { bearingAfterLetGo, letGoCue, runOnTurn } from './let-go';
 import { FRAME_CAP, STEPS_PER_FRAME, slowMotion } from './pacing';
 import { nearFade } from './ring-fade';
 import { offScreenLabel } from './ring-pointer';
 import { createScenery, HORIZON_COLOUR, SCENERY_DETAIL, SUN_DIRECTION } from './scenery';
-import { secondTry } from './second-try';
+import { secondTry, tryBanner } from './second-try';
 import { clearPulse, createPulse, type Pulse, pressPulse, pulseOn, releasePulse } from './tap-latch';
 
 const params = {
@@ -176,10 +180,14 @@ const state = {
   elevator: 0,
   aileron: 0,
   rudder: 0,
-  /** Rings passed and missed (for good), and rings missed once and given a second try (./second-try.ts). */
+  /**
+   * Rings passed and missed (for good), rings missed once and given a second try, and rings passed on
+   * that second try (./second-try.ts: scored with no penalty).
+   */
   score: 0,
   missed: 0,
   again: 0,
+  secondPassed: 0,
   /** 'flying', then 'crashed' (into the ground or the sea) or 'done' (no ring left). */
   phase: 'flying' as 'flying' | 'crashed' | 'done',
   /** Time since the start, s of game time; stops when the course is done. */
@@ -204,6 +212,7 @@ function createWorld(): PhysicsWorld {
     score: 0,
     missed: 0,
     again: 0,
+    secondPassed: 0,
     phase: 'flying',
     time: 0,
     stalled: false,
@@ -590,16 +599,19 @@ function checkRings(time: number): void {
     if (result === 'passed') {
       state.score++;
       const last = nextRing(rings) < 0;
-      events.push({ text: last ? 'Last ring!' : `Ring ${ring + 1} ✓`, colour: '#7dff9a', time });
+      // Passed on its second try: a pass like any other, no penalty, said so (./second-try.ts).
+      const second = tried.has(ring);
+      if (second) state.secondPassed++;
+      events.push({ text: tryBanner({ ring, result }, { second, last }), colour: '#7dff9a', time });
       // Then, once the tick is read, which way the next ring lies: the turn to it is seen coming.
       if (!last) events.push({ text: '', colour: '#ffd166', time: time + NEXT_AFTER, next: nextRing(rings) });
       sound.chime(880, 0.18);
       setTimeout(() => sound.chime(1320, 0.3), 110);
     } else if (result === 'again') {
-      // A first miss: time on the clock, no star, and the ring comes round again.
+      // A first miss: no time, no star yet; the ring comes round again to be scored.
       state.again++;
       missedAt = time;
-      events.push({ text: `Missed ring ${ring + 1} · +${MISS_PENALTY} s · try it again`, colour: '#ff8a5a', time });
+      events.push({ text: tryBanner({ ring, result }), colour: '#ff8a5a', time });
       sound.chime(220, 0.4);
     } else {
       // A miss costs a star and time on the course clock, said at once in the banner and by the
@@ -607,8 +619,8 @@ function checkRings(time: number): void {
       state.missed++;
       missedAt = time;
       // The star is named only when this miss takes one (every second miss does: ./course.ts courseStars).
-      const star = courseStars(state.missed) < courseStars(state.missed - 1) ? ' · −1 ★' : '';
-      events.push({ text: `Missed ring ${ring + 1}${star} · +${MISS_PENALTY} s`, colour: '#ff8a5a', time });
+      const starLost = courseStars(state.missed) < courseStars(state.missed - 1);
+      events.push({ text: tryBanner({ ring, result }, { starLost }), colour: '#ff8a5a', time });
       sound.chime(220, 0.4);
     }
   }
@@ -703,7 +715,7 @@ let lastVsBest: 'first' | 'better' | 'not' = 'not';
 function finish(time: number): void {
   state.phase = 'done';
   const best = bestOf();
-  const total = courseTime(state.time, state.missed + state.again);
+  const total = courseTime(state.time, state.missed);
   lastVsBest = compareWithBest(best, state.score, total);
   // The first run is kept as the best to beat, but only a run that beats a kept best is praised.
   // A time past MAX_BEST_TIME would read back as none: not kept.
@@ -1088,14 +1100,13 @@ function distanceText(d: number): string {
 function updateGoal(): void {
   const n = nextRing(rings);
   const total = rings.length;
-  // The course clock: the time flown plus the misses' penalties, said beside it.
-  const slips = state.missed + state.again;
-  const penalty = slips > 0 ? ` (+${MISS_PENALTY * slips} s)` : '';
+  // The course clock: the time flown plus the penalties of the rings missed for good, said beside it.
+  const penalty = state.missed > 0 ? ` (+${MISS_PENALTY * state.missed} s)` : '';
   const stars = courseStars(state.missed);
-  const courseClock = `${clock(courseTime(state.time, slips))}${penalty} · ${'★'.repeat(stars)}${'☆'.repeat(3 - stars)}`;
+  const courseClock = `${clock(courseTime(state.time, state.missed))}${penalty} · ${'★'.repeat(stars)}${'☆'.repeat(3 - stars)}`;
   const distance = n < 0 ? '' : distanceText(Math.hypot(rings[n]!.x - at.x, rings[n]!.y - at.y, rings[n]!.z - at.z));
   // A ring missed once comes round again (./second-try.ts): the line says so while it is next, so the
-  // 10 s just added and the ring number not moving on read as the second try they are.
+  // ring number not moving on reads as the second try it is.
   const retry = n >= 0 && tried.has(n);
   const text =
     state.phase === 'crashed'
@@ -1119,7 +1130,7 @@ function updateHud(i: ReturnType<typeof instruments>): void {
   const speed = `${i.speed.toFixed(0)} m/s`;
   // The rings counted one way everywhere (the end card too: ./finish.ts finishCard): passed, missed
   // for good and still to fly, which add up to the course's rings. A first miss is not a ring missed
-  // (it comes round again: ./second-try.ts); the goal line says "second try" and its 10 s.
+  // (it comes round again: ./second-try.ts); the goal line says "second try".
   const toGo = rings.filter((r) => r.status === 'ahead').length;
   const missedNote = state.missed > 0 ? ` · ${state.missed} missed` : '';
   // The height above the ground (or the sea) under the aircraft, what keeps it off the hills: "alt"
@@ -1150,7 +1161,9 @@ function updateHud(i: ReturnType<typeof instruments>): void {
   // After a crash the card waits CRASH_CARD_MS, so that the explosion is seen first.
   const waiting = state.phase === 'crashed' && performance.now() - crashWall < CRASH_CARD_MS;
   const card =
-    state.phase === 'flying' || waiting ? '' : `${state.phase} ${state.score} ${state.missed} ${state.again} ${state.time} ${lastVsBest}`;
+    state.phase === 'flying' || waiting
+      ? ''
+      : `${state.phase} ${state.score} ${state.missed} ${state.secondPassed} ${state.time} ${lastVsBest}`;
   if (card === shownCard) return;
   shownCard = card;
   if (card === '') {
@@ -1193,7 +1206,7 @@ function showFinish(): void {
     passed: state.score,
     total: rings.length,
     missed: state.missed,
-    again: state.again,
+    again: state.secondPassed,
     flown: state.time,
     vsBest: lastVsBest,
     best: bestOf(),
@@ -1292,7 +1305,10 @@ function drawCockpit(on: boolean, i: ReturnType<typeof instruments>): void {
   shownAttitude.visible = on;
   liftOffPanel(on ? cockpit.panelTop() : 0);
   if (!on) return;
-  cockpit.draw({ speed: i.speed, altitude: i.altitude, heading: i.heading, climb: i.climb, throttle: state.throttle });
+  // The heading to the next ring from the aircraft (the compass's bug), degrees in [0, 360).
+  const n = nextRing(rings);
+  const ring = n < 0 ? undefined : ((Math.atan2(rings[n]!.z - now[2]!, rings[n]!.x - now[0]!) * 180) / Math.PI + 360) % 360;
+  cockpit.draw({ speed: i.speed, altitude: i.altitude, heading: i.heading, ring, climb: i.climb, throttle: state.throttle });
   const slot = cockpit.attitudeSlot();
   horizon.canvas.style.left = `${slot.x}px`;
   horizon.canvas.style.top = `${slot.y - slot.size / 2}px`;
@@ -1885,6 +1901,45 @@ function markPath(): void {
   marker.style.filter = 'drop-shadow(0 0 3px rgba(0, 0, 0, 0.7))';
 }
 
+/**
+ * "Let go now" under the path marker (./let-go.ts): shown while a held bank, let go now, would end
+ * the turn on the next ring (the wings roll level but the turn runs on meanwhile, about 6 degrees
+ * from a steep bank: let go when the ring is straight ahead and the aircraft swings past it).
+ */
+const letGoEl = overlay(
+  'display: none; padding: 2px 10px; border-radius: 10px; background: rgba(10, 36, 18, 0.88); color: #5dff8a; font: 700 15px system-ui, sans-serif; white-space: nowrap;',
+);
+letGoEl.dataset.hud = 'let-go';
+/** Whether the "let go now" cue shows now (tests). */
+let letGoShown = false;
+
+/** Shows or hides the "let go now" cue for the frame (./let-go.ts letGoCue), under the marker or, with it off screen, mid-scene. */
+function cueLetGo(): void {
+  const i = nextRing(rings);
+  const world = shell.world,
+    e = handles.body,
+    V = world.components.Velocity;
+  const speed = Math.hypot(V.x[e]!, V.y[e]!, V.z[e]!);
+  let on = false;
+  if (i >= 0 && state.phase === 'flying' && params.assist && speed > 1 && !holding) {
+    const r = rings[i]!;
+    const runOn = runOnTurn(motion.bank, motion.rollRate, speed);
+    const after = bearingAfterLetGo(r.x - now[0]!, r.z - now[2]!, Math.atan2(V.z[e]!, V.x[e]!), runOn);
+    // The stick's own deflection (not its smoothed input, which eases out after the finger lifts), or
+    // a bank key's ramped input: the cue goes the moment the pilot lets go.
+    on = letGoCue(after, runOn, clamp1(keyInput.roll + stickInput.x));
+  }
+  letGoShown = on;
+  letGoEl.style.display = on ? 'block' : 'none';
+  if (!on) return;
+  // Named for what is held: a bank key's arrow (a climb key may stay held), or the stick.
+  const text = stickInput.x !== 0 ? 'Let go now' : `Let go of ${keyInput.roll > 0 ? '→' : '←'} now`;
+  if (letGoEl.textContent !== text) letGoEl.textContent = text;
+  const atMarker = marker.style.display === 'block';
+  letGoEl.style.left = `${atMarker ? pathAim.x : app.canvas.clientWidth / 2}px`;
+  letGoEl.style.top = `${atMarker ? pathAim.y + MARKER_HALF[1] + 14 : app.canvas.clientHeight / 2}px`;
+}
+
 // ---- Camera, every frame ------------------------------------------------------------------------
 
 const p3 = [0, 0, 0],
@@ -2048,6 +2103,7 @@ function frame(alpha = 1): void {
   paintRings(world.time);
   drawGuide(at);
   markPath();
+  cueLetGo();
   showWarning(world.time);
   measurePlane();
   pointToNextRing();
@@ -2209,6 +2265,8 @@ shell.expose({
     bankTrace = on ? [] : null;
     return bankTrace;
   },
+  /** Whether the "let go now" cue shows (./let-go.ts letGoCue). */
+  letGo: () => letGoShown,
   /** The pilot's stick input now (after the response curve), x right, y up. */
   stickInput: () => ({ ...stickInput }),
   /** Speed, altitude, attitude, heading and the wing's angle of attack now (m/s, m, degrees). */

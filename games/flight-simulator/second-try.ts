@@ -1,13 +1,13 @@
 /**
  * A second try at a missed ring: the first time a ring is missed it is not lost, it comes round again
- * (the game lays it just ahead, ./course.ts relayAfterMiss, as a go-around), and the try costs
- * MISS_PENALTY s on the course clock but no star; missed again, it is missed for good (a star's share
- * and the time, as every miss: ./course.ts courseStars, courseTime). So one slip is put right by
- * flying it again, as a player expects, while a run of misses still costs the stars. Headless (no
- * DOM), tested in node (test/games/flight-simulator-course.test.ts).
+ * (the game lays it just ahead, ./course.ts relayAfterMiss, as a go-around). Flown through on that
+ * second try it scores as a pass, with no penalty on the course clock (the go-around has cost its own
+ * seconds): a player who comes back for a ring gets it. Missed again, it is missed for good (a star's
+ * share and MISS_PENALTY s, as every miss: ./course.ts courseStars, courseTime). The banner says which
+ * (`tryBanner`). Headless (no DOM), tested in node (test/games/flight-simulator-course.test.ts).
  */
 
-import type { Ring, RingEvent } from './course';
+import { MISS_PENALTY, type Ring, type RingEvent } from './course';
 
 /** What a move did to a ring after the second-try rule: 'again' is a first miss, the ring still ahead. */
 export interface TryEvent {
@@ -35,4 +35,23 @@ export function secondTry(rings: Ring[], happened: readonly RingEvent[], tried: 
   tried.add(last.ring);
   last.result = 'again';
   return out;
+}
+
+/**
+ * The banner for `event` (a ring's index, 0-based, and what happened to it): a pass "Ring 3 ✓" ("Last
+ * ring!" when `last`), on a second try (`second`) "Ring 3 ✓ on the 2nd try · no penalty"; a first
+ * miss "Missed ring 3 · fly it again to score it" (it costs nothing yet: the ring comes round); a miss
+ * for good "Missed ring 3 · +10 s", with " · −1 ★" before the time when it takes a star (`starLost`).
+ * @throws RangeError on a ring index that is not an integer >= 0.
+ */
+export function tryBanner(event: TryEvent, opts: { second?: boolean; last?: boolean; starLost?: boolean } = {}): string {
+  if (!(Number.isInteger(event.ring) && event.ring >= 0))
+    throw new RangeError(`tryBanner: ring must be an integer >= 0, got ${event.ring}`);
+  const n = event.ring + 1;
+  if (event.result === 'passed') {
+    if (opts.second) return `${opts.last ? 'Last ring' : `Ring ${n}`} ✓ on the 2nd try · no penalty`;
+    return opts.last ? 'Last ring!' : `Ring ${n} ✓`;
+  }
+  if (event.result === 'again') return `Missed ring ${n} · fly it again to score it`;
+  return `Missed ring ${n}${opts.starLost ? ' · −1 ★' : ''} · +${MISS_PENALTY} s`;
 }

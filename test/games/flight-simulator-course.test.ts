@@ -55,7 +55,7 @@ import {
   TIP_OFFSET,
 } from '../../games/flight-simulator/course';
 import { courseName, finishCard, LAST_SEED, nextSeed } from '../../games/flight-simulator/finish';
-import { secondTry } from '../../games/flight-simulator/second-try';
+import { secondTry, tryBanner } from '../../games/flight-simulator/second-try';
 
 const terrain = aircraft.build(createPhysicsWorld(aircraft.worldOptions()), { seed: 3 }).terrain;
 
@@ -327,6 +327,19 @@ describe('flight simulator course', () => {
     const behind = course();
     expect(secondTry(behind, leaveBehind(behind, LEFT_BEHIND_TIME), new Set())).toEqual([{ ring: 0, result: 'again' }]);
     expect(() => secondTry(course(), [{ ring: 5, result: 'missed' }], new Set())).toThrow(/secondTry: event ring 5/);
+  });
+
+  it('a second try scores (tryBanner): a first miss costs nothing yet and says to fly it again; passed on it, "no penalty"; missed again, +10 s', () => {
+    // A ring missed and flown again scores as a pass with no penalty: a stranger who came back for it
+    // saw "+10 s" both times and took the pass for a miss.
+    expect(tryBanner({ ring: 1, result: 'again' })).toBe('Missed ring 2 · fly it again to score it');
+    expect(tryBanner({ ring: 1, result: 'passed' }, { second: true })).toBe('Ring 2 ✓ on the 2nd try · no penalty');
+    expect(tryBanner({ ring: 9, result: 'passed' }, { second: true, last: true })).toBe('Last ring ✓ on the 2nd try · no penalty');
+    expect(tryBanner({ ring: 1, result: 'passed' })).toBe('Ring 2 ✓');
+    expect(tryBanner({ ring: 9, result: 'passed' }, { last: true })).toBe('Last ring!');
+    expect(tryBanner({ ring: 1, result: 'missed' }, { starLost: true })).toBe(`Missed ring 2 · −1 ★ · +${MISS_PENALTY} s`);
+    expect(tryBanner({ ring: 1, result: 'missed' })).toBe(`Missed ring 2 · +${MISS_PENALTY} s`);
+    expect(() => tryBanner({ ring: -1, result: 'missed' })).toThrow(/tryBanner: ring must be an integer >= 0, got -1/);
   });
 
   it("a ring the flight-path marker promised (flyRings' promised) is passed when its plane is crossed, even outside it; another ring is not", () => {
@@ -658,16 +671,19 @@ describe('flight simulator course', () => {
     expect(missed.detail).toBe('Time 1:35 + 30 s penalty (3 misses × 10 s) = 2:05');
     expect(missed.best).toBe('Best: 9 of 10 rings in 1:40');
     expect(missed.actions.map((a) => a.label)).toEqual(['Retry ↺', 'Next: course 8 ▶']);
-    // Two rings flown again after a first miss (second-try.ts): 10 s each, no star; one miss is said as one.
+    // Two rings passed on their second try after a first miss (second-try.ts): scored, no penalty, no
+    // star, named in the result (a stranger who came back for a ring read it as a miss: +10 s each and
+    // "2 misses" beside "10 of 10 rings passed").
     const tries = finishCard({ ...base, again: 2 });
-    expect(tries.result).toBe('10 of 10 rings passed · 1:55  ★★★');
-    expect(tries.detail).toBe('Time 1:35 + 20 s penalty (2 misses × 10 s, second tries included) = 1:55');
-    // A ring missed on both tries (a stranger read "9 of 10 rings" beside "missed 2"): one ring missed, two misses' time.
-    const twice = finishCard({ ...base, passed: 9, missed: 1, again: 1, flown: 80 });
-    expect(twice.result).toBe('9 of 10 rings passed · 1 missed · 1:40  ★★☆');
-    expect(twice.detail).toBe('Time 1:20 + 20 s penalty (2 misses × 10 s, second tries included) = 1:40');
+    expect(tries.result).toBe('10 of 10 rings passed (2 on a 2nd try) · 1:35  ★★★');
+    expect(tries.detail).toBe('');
+    // A ring missed on both tries: one ring missed, one miss's time (its first miss costs nothing).
+    const twice = finishCard({ ...base, passed: 9, missed: 1, flown: 80 });
+    expect(twice.result).toBe('9 of 10 rings passed · 1 missed · 1:30  ★★☆');
+    expect(twice.detail).toBe('Time 1:20 + 10 s penalty (1 miss × 10 s) = 1:30');
     expect(finishCard({ ...base, passed: 9, missed: 1 }).detail).toBe('Time 1:35 + 10 s penalty (1 miss × 10 s) = 1:45');
-    expect(() => finishCard({ ...base, again: -1 })).toThrow(/finishCard: again must be an integer >= 0/);
+    expect(() => finishCard({ ...base, again: -1 })).toThrow(/finishCard: again must be an integer in \[0, passed\]/);
+    expect(() => finishCard({ ...base, passed: 1, again: 2 })).toThrow(/finishCard: again must be an integer in \[0, passed\]/);
     expect(finishCard({ ...base, vsBest: 'better' }).best).toBe('A new best for this course!');
     expect(() => finishCard({ ...base, passed: 11 })).toThrow(/finishCard: passed and total/);
     // Course n is seed n, numbered out of the LAST_SEED that Next course goes through.
