@@ -59,6 +59,7 @@ import {
 } from './beacons';
 import { drawBoat, HEADLIGHT, inHeadlight } from './boat-drawing';
 import { CURRENT_NOTE_LIFE, CURRENT_NOTE_SPEED, currentAt, currentMark, currentNote, drawCurrent, driftInCurrent } from './current';
+import { type EdgeMark, edgeMarks } from './edge-marks';
 import { coastDistance, createHelmState, HELM, type HelmInput, keyHeaveShare, NO_INPUT, steer } from './helm';
 import { createLevelStop, LEVEL_BAND, levelStop, levelWith } from './level-stop';
 import { bestTimes, LEVELS, levelCourse, MAX_BEACONS, MAX_BEST_TIME } from './levels';
@@ -1974,6 +1975,79 @@ function declutter(H: number, hull: readonly number[]): void {
   }
 }
 
+/** The edge marks as last drawn (tests): each hazard's kind, place (m), metres ahead of the bow, words and box (x, y, width, height, px). */
+const edgeShown: (EdgeMark & { text: string; box: number[] })[] = [];
+/** The edge marks' words ("62 m"), a pool hidden when unused. */
+const edgeTexts: Text[] = [];
+/**
+ * Draws a mark at the view's leading edge (left of the depth gauge) for each hazard beyond it
+ * (./edge-marks.ts edgeMarks: the live mines and a seabed ridge near the boat's depth, up to
+ * EDGE_MARK_REACH m ahead of the bow), at its depth on the screen (kept inside the scene's top and
+ * bottom), so a pilot sees a mine or a ridge coming seconds before it scrolls into view: a mine as a
+ * red disc with horns, a ridge as a sand-coloured peak, each with an arrow pointing off the screen
+ * and its distance ahead ("62 m"). Marks are kept off each other and off the gauge's tags. `W` x `H`:
+ * the scene, px; `k`: px/m; `cx`: the view's centre x, m; `sy`: world y to screen px; (`hx`, `hy`):
+ * the hull, m; `vx`: its speed along x, m/s (backing, the marks are at the left edge).
+ */
+function drawEdgeMarks(W: number, H: number, k: number, cx: number, sy: (y: number) => number, hx: number, hy: number, vx: number): void {
+  const heading: 1 | -1 = vx < -0.5 ? -1 : 1;
+  const edge = heading > 0 ? cx + (W / 2 - GAUGE_WIDTH - ON_SCREEN_MARGIN) / k : cx - (W / 2 - ON_SCREEN_MARGIN) / k;
+  const marks = state.over ? [] : edgeMarks(edge, hx, hy, mines, mineLive, (x) => seabedHeight(handles.seabed, x), heading);
+  edgeShown.length = 0;
+  const size = compact ? 14 : 13,
+    top = 14 + size,
+    bottom = H - 14 - size;
+  // Taken: the gauge's tags, then each mark placed.
+  const taken = [gauge_.depth, gauge_.target].filter((b) => b[2]! > 0);
+  for (const [n, m] of marks.entries()) {
+    const text =
+      edgeTexts[n] ??
+      new Text({ text: '', style: { fill: 0xffffff, fontSize: size, fontWeight: '700', fontFamily: 'system-ui, sans-serif' } });
+    if (!edgeTexts[n]) {
+      edgeTexts[n] = text;
+      app.stage.addChild(text);
+    }
+    text.visible = true;
+    text.text = `${m.kind === 'ridge' ? 'ridge ' : ''}${Math.max(0, m.ahead).toFixed(0)} m`;
+    text.style.fill = m.kind === 'mine' ? 0xffc2b3 : 0xf3dcae;
+    // The arrow's tip at the edge, the icon inside it, the words inside the icon.
+    const tip = heading > 0 ? W - GAUGE_WIDTH - 6 : 6,
+      icon = tip - heading * 22,
+      w = text.width + 38,
+      h = Math.max(24, text.height + 8);
+    let y = Math.max(top, Math.min(bottom, sy(m.y)));
+    const boxAt = (yy: number) => [heading > 0 ? tip - w - 6 : tip, yy - h / 2, w + 6, h];
+    for (let tries = 0; tries < 6; tries++) {
+      const hit = taken.find((b) => overlaps(boxAt(y), b, 2));
+      if (!hit) break;
+      // Off it, downward if the mark's depth lies below the middle of what it met, else upward.
+      const down = y >= hit[1]! + hit[3]! / 2;
+      y = down ? hit[1]! + hit[3]! + h / 2 + 3 : hit[1]! - h / 2 - 3;
+      y = Math.max(top, Math.min(bottom, y));
+    }
+    const box = boxAt(y);
+    taken.push(box);
+    const red = m.kind === 'mine';
+    g.roundRect(box[0]!, box[1]!, box[2]!, box[3]!, h / 2)
+      .fill({ color: 0x06213a, alpha: 0.82 })
+      .stroke({ color: red ? 0xff6b4a : 0xd9b77a, width: 1.5 });
+    g.poly([tip, y, tip - heading * 9, y - 7, tip - heading * 9, y + 7]).fill(red ? 0xff6b4a : 0xd9b77a);
+    if (red) {
+      for (let j = 0; j < 4; j++) {
+        const a = (j * Math.PI) / 2 + Math.PI / 4;
+        g.moveTo(icon, y)
+          .lineTo(icon + 8 * Math.cos(a), y + 8 * Math.sin(a))
+          .stroke({ color: 0xd8dde3, width: 1.5 });
+      }
+      g.circle(icon, y, 5.5).fill(0xc3ccd6).stroke({ color: 0xff6b4a, width: 1.5 });
+    } else g.poly([icon - 8, y + 6, icon - 2, y - 6, icon + 1, y - 1, icon + 3, y - 4, icon + 8, y + 6]).fill(0xd9b77a);
+    text.anchor.set(heading > 0 ? 1 : 0, 0.5);
+    text.position.set(icon - heading * 14, y);
+    edgeShown.push({ ...m, text: text.text, box: [...box] });
+  }
+  for (let i = marks.length; i < edgeTexts.length; i++) edgeTexts[i]!.visible = false;
+}
+
 /** The depth gauge's tags as last drawn (tests): the boat's depth and the target's, each x, y, width, height, px (zeros while hidden). */
 const gauge_ = { depth: [0, 0, 0, 0], target: [0, 0, 0, 0] };
 
@@ -2971,6 +3045,7 @@ function draw(): void {
     -seabedHeight(handles.seabed, hxw),
     aim.index >= 0 ? -handles.beacons[2 * aim.index + 1]! : Number.NaN,
   );
+  drawEdgeMarks(W, H, k, cx, sy, hxw, hyw, c.Velocity.x[e]!);
   drawHits(t, k, sx, sy, W, H, sy(hyw) - (Hh + 2.5) * k);
   // The hull's box on the screen (level, its sail included): the tags that only add are kept off it.
   const hr = Math.max(SUBMARINE.length / 2, SUBMARINE.height / 2 + 2) * k;
@@ -3099,6 +3174,8 @@ shell.expose({
   }),
   /** The camera as last drawn: centre (x, y, m), zoom (px/m), look-ahead (m, before its limit) and shake (px). */
   camera: () => ({ ...camera }),
+  /** The marks at the view's leading edge as last drawn (./edge-marks.ts): each hazard's kind, place (m), metres ahead of the bow, words and box (px). */
+  edgeMarks: () => edgeShown.map((m) => ({ ...m, box: [...m.box] })),
   /**
    * The newest hit's signs: its cause ('' before any), place (m), the label shown ('' once faded)
    * and its screen box (x, y, width, height, px), its red pill's box (px, zeros while none), the
