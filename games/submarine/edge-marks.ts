@@ -37,7 +37,8 @@ export interface EdgeMark {
 
 /**
  * The hazards beyond the view's leading edge at `edge` (m, the world x where the clear view ends,
- * the depth gauge left out) of a boat whose hull's centre is at (`hx`, `hy`) m, heading to +x: each
+ * the depth gauge left out) of a boat whose hull's centre is at (`hx`, `hy`) m (`hy`: the height it
+ * is at, or the lower one it is ordered down to), heading to +x: each
  * live mine (`mines[i]` with `live[i]`) whose centre lies past `edge` and within `reach` m of the bow,
  * nearest first; then the seabed's highest point (`bed`: the bed's height at x, m) between `edge`
  * and `reach` past the bow, when it rises to within EDGE_MARK_BED_ROOM of the keel and above the bed

@@ -945,14 +945,15 @@ pageLayout().status.append(gauge);
 
 /**
  * The end of a run over the scene: won or sunk, the time, the hull, the best, and a button to go again.
- * Nearly opaque: the target's label drawn under it showed through a 0.88 one and mixed with its lines.
+ * Opaque: the gauge's tags, the target's label and the boat drawn under it showed through a 0.88 one,
+ * and still as ghosts through a 0.97 one, and mixed with its lines.
  */
 const endCard = document.createElement('div');
 endCard.dataset.sceneOverlay = '';
 endCard.dataset.hud = 'end';
 endCard.style.cssText =
   'position: absolute; z-index: 4; left: 50%; top: 26%; transform: translate(-50%, -50%); width: min(88%, 400px); box-sizing: border-box;' +
-  'padding: 12px 16px; border-radius: 14px; background: rgba(4, 16, 30, 0.97); color: #e8f4ff; font: 16px/1.45 system-ui, sans-serif;' +
+  'padding: 12px 16px; border-radius: 14px; background: rgb(4, 16, 30); color: #e8f4ff; font: 16px/1.45 system-ui, sans-serif;' +
   'text-align: center; pointer-events: none; display: none;';
 pageLayout().stage.append(endCard);
 /** The first-time hint over the top of the scene: what a glow, a beacon and par are worth. */
@@ -2056,7 +2057,9 @@ const edgeTexts: Text[] = [];
 function drawEdgeMarks(W: number, H: number, k: number, cx: number, sy: (y: number) => number, hx: number, hy: number, vx: number): void {
   const heading: 1 | -1 = vx < -0.5 ? -1 : 1;
   const edge = heading > 0 ? cx + (W / 2 - GAUGE_WIDTH - ON_SCREEN_MARGIN) / k : cx - (W / 2 - ON_SCREEN_MARGIN) / k;
-  const marks = state.over ? [] : edgeMarks(edge, hx, hy, mines, mineLive, (x) => seabedHeight(handles.seabed, x), heading);
+  // A ridge is measured against the deeper of the boat's depth and the depth ordered (the boat diving to a beacon low over the bed meets it there).
+  const low = Number.isFinite(state.holdY) ? Math.min(hy, state.holdY) : hy;
+  const marks = state.over ? [] : edgeMarks(edge, hx, low, mines, mineLive, (x) => seabedHeight(handles.seabed, x), heading);
   edgeShown.length = 0;
   const size = compact ? 14 : 13,
     top = 14 + size,

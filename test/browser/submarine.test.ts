@@ -368,6 +368,14 @@ async function diveOnPhone(g: GamePage): Promise<void> {
     return { text: el.textContent ?? '', right: b.right, bottom: b.bottom, scroll: el.scrollWidth, client: el.clientWidth };
   });
   expect(gauge.text).toContain('Hull breached');
+  // The end card is opaque: what is drawn under it (the gauge's tags, the target's label, the boat)
+  // showed through as ghosts at an alpha of 0.97. Exact: the alpha is set, not measured.
+  const cardAlpha = await g.page.evaluate(() => {
+    const bg = getComputedStyle(document.querySelector<HTMLElement>('[data-hud="end"]')!).backgroundColor;
+    const m = /rgba?\(([^)]*)\)/.exec(bg)?.[1]?.split(',') ?? [];
+    return m.length === 4 ? Number(m[3]) : m.length === 3 ? 1 : Number.NaN;
+  });
+  expect(cardAlpha).toBe(1);
   expect(gauge.right).toBeLessThanOrEqual(390);
   expect(gauge.scroll).toBeLessThanOrEqual(gauge.client);
   expect((await checkLayout(g.page)).clipped).toEqual([]);
