@@ -2050,7 +2050,8 @@ const edgeTexts: Text[] = [];
  * EDGE_MARK_REACH m ahead of the bow), at its depth on the screen (kept inside the scene's top and
  * bottom), so a pilot sees a mine or a ridge coming seconds before it scrolls into view: a mine as a
  * red disc with horns, a ridge as a sand-coloured peak, each with an arrow pointing off the screen
- * and its distance ahead ("62 m"). Marks are kept off each other and off the gauge's tags. `W` x `H`:
+ * and its distance ahead ("62 m"). Marks are kept off each other, the gauge's tags, the target's
+ * frame and the pointer's label. `W` x `H`:
  * the scene, px; `k`: px/m; `cx`: the view's centre x, m; `sy`: world y to screen px; (`hx`, `hy`):
  * the hull, m; `vx`: its speed along x, m/s (backing, the marks are at the left edge).
  */
@@ -2064,8 +2065,8 @@ function drawEdgeMarks(W: number, H: number, k: number, cx: number, sy: (y: numb
   const size = compact ? 14 : 13,
     top = 14 + size,
     bottom = H - 14 - size;
-  // Taken: the gauge's tags, then each mark placed.
-  const taken = [gauge_.depth, gauge_.target].filter((b) => b[2]! > 0);
+  // Taken: the gauge's tags, the target's frame, the pointer's label and badge, then each mark placed.
+  const taken = [gauge_.depth, gauge_.target, aim.frame, ...(pointer.visible ? [aim.label, aim.badge] : [])].filter((b) => b[2]! > 0);
   for (const [n, m] of marks.entries()) {
     const text =
       edgeTexts[n] ??
