@@ -59,6 +59,7 @@ import {
 } from './beacons';
 import { drawBoat, HEADLIGHT, inHeadlight } from './boat-drawing';
 import { CURRENT_NOTE_LIFE, CURRENT_NOTE_SPEED, currentAt, currentMark, currentNote, drawCurrent, driftInCurrent } from './current';
+import { type EdgeMark, edgeMarks } from './edge-marks';
 import { coastDistance, createHelmState, HELM, type HelmInput, keyHeaveShare, NO_INPUT, steer } from './helm';
 import { createLevelStop, LEVEL_BAND, levelStop, levelWith } from './level-stop';
 import { bestTimes, LEVELS, levelCourse, MAX_BEACONS, MAX_BEST_TIME } from './levels';
@@ -894,19 +895,21 @@ const compact = pageLayout().compact();
 const gauge = document.createElement('div');
 gauge.className = 'sub-gauges';
 gauge.dataset.hud = 'gauges';
-// On a phone 6 px at the sides (not 10): the status line with the level keeps to one line of 390 px.
-gauge.style.cssText = `font: ${compact ? 12 : 13}px/1.35 system-ui, sans-serif; color: #e8f4ff; padding: 4px ${compact ? 6 : 10}px;`;
+// On a phone 6 px at the sides (not 10), in 14 px type (10 to 12 px read small there), on two lines
+// (the goal, then the readout): the longest figures of a run do not fit one line of 390 px at 14 px,
+// and two lines always keep the scene's height put.
+gauge.style.cssText = `font: ${compact ? 14 : 13}px/1.35 system-ui, sans-serif; color: #e8f4ff; padding: 4px ${compact ? 6 : 10}px;`;
 const goal = document.createElement('div');
 goal.dataset.hud = 'goal';
 goal.style.cssText = 'font-weight: 700; color: #ffe066;';
 /** The goal's words up to the clock ("L1 · ◯ 2/6 · 0:42"), and the course's par after it (" · par 2:20"). */
 const goalText = document.createElement('span');
 /**
- * The par after the clock, in lighter type (smaller on a phone, so the status line keeps to one
- * line of 390 px): a target to beat, not a limit the clock counts towards ("0:42/2:20" read as one).
+ * The par after the clock, in lighter type (in the line's 14 px on a phone too): a target to beat,
+ * not a limit the clock counts towards ("0:42/2:20" read as one).
  */
 const goalPar = document.createElement('span');
-goalPar.style.cssText = `font-weight: 400;${compact ? ' font-size: 10px;' : ''}`;
+goalPar.style.cssText = 'font-weight: 400;';
 goal.append(goalText, goalPar);
 const readout = document.createElement('div');
 readout.dataset.hud = 'readout';
@@ -929,26 +932,28 @@ physicsText.dataset.hud = 'helm-details';
 physicsText.style.whiteSpace = 'pre-line';
 shell.hud.details.append(physicsText);
 instruments.append(seabedLine);
-// The status row is one short line, the goal then the numbers a player needs (three lines, the
-// third small and grey, were too dense); on a desktop the instruments (seabed, climb, pitch, screw,
+// The status row is one short line (on a phone two), the goal then the numbers a player needs (three
+// lines, the third small and grey, were too dense); on a desktop the instruments (seabed, climb, pitch, screw,
 // tanks, helm) go in the info column, a line each, and on a phone they are left out.
-goal.style.display = readout.style.display = 'inline';
+goal.style.display = 'inline';
+readout.style.display = compact ? 'block' : 'inline';
 if (compact) instruments.style.display = 'none';
 else pageLayout().info.append(instruments);
 gauge.append(goal, readout);
-goal.after(Object.assign(document.createElement('span'), { textContent: ' · ' }));
+if (!compact) goal.after(Object.assign(document.createElement('span'), { textContent: ' · ' }));
 pageLayout().status.append(gauge);
 
 /**
  * The end of a run over the scene: won or sunk, the time, the hull, the best, and a button to go again.
- * Nearly opaque: the target's label drawn under it showed through a 0.88 one and mixed with its lines.
+ * Opaque: the gauge's tags, the target's label and the boat drawn under it showed through a 0.88 one,
+ * and still as ghosts through a 0.97 one, and mixed with its lines.
  */
 const endCard = document.createElement('div');
 endCard.dataset.sceneOverlay = '';
 endCard.dataset.hud = 'end';
 endCard.style.cssText =
   'position: absolute; z-index: 4; left: 50%; top: 26%; transform: translate(-50%, -50%); width: min(88%, 400px); box-sizing: border-box;' +
-  'padding: 12px 16px; border-radius: 14px; background: rgba(4, 16, 30, 0.97); color: #e8f4ff; font: 16px/1.45 system-ui, sans-serif;' +
+  'padding: 12px 16px; border-radius: 14px; background: rgb(4, 16, 30); color: #e8f4ff; font: 16px/1.45 system-ui, sans-serif;' +
   'text-align: center; pointer-events: none; display: none;';
 pageLayout().stage.append(endCard);
 /** The first-time hint over the top of the scene: what a glow, a beacon and par are worth. */
@@ -1486,6 +1491,10 @@ for (const type of ['pointerdown', 'pointermove', 'pointerup', 'pointercancel', 
 // On a phone a larger stick (136 px, the knob's reach 56 px): the thumb grades its push over more
 // of its travel, and the rim is easier to find without looking.
 if (compact) stick.element.style.cssText += 'width: 136px; height: 136px;';
+// Its caption in 13 px type on a phone (game-kit's 12 px read small under the thumb), on one line
+// (at 14 px it took two and pushed the Nose buttons onto two rows).
+const stickCaption = stick.wrapper.querySelector<HTMLElement>('.bp-stick-label');
+if (compact && stickCaption) stickCaption.style.cssText = 'font-size: 13px; white-space: nowrap;';
 /**
  * A mouse pressed on the scene and dragged steers as the stick does: the drag from the press point,
  * MOUSE_STICK_REACH px to the rim (right ahead, left astern, up rise, down dive; further is the
@@ -1533,10 +1542,67 @@ for (const type of ['pointerup', 'pointercancel', 'lostpointercapture'] as const
     Object.assign(stickInput, { x: 0, y: 0, held: false });
     timeControls(e.timeStamp);
   });
-/** Draws the mouse stick while it is dragged: its reach as a ring round the press point, a knob where the stick is. */
+/** The helm dial's radius, px, and its centre's room from the scene's left and bottom edges, px. */
+const HELM_DIAL = { r: 30, inset: 44 };
+/** The helm dial's caption ("helm"): what the dial is. */
+const helmCaption = new Text({
+  text: 'helm',
+  style: { fill: 0xe8f4ff, fontSize: 13, fontWeight: '700', fontFamily: 'system-ui, sans-serif', stroke: { color: 0x06213a, width: 3 } },
+});
+helmCaption.anchor.set(0.5, 1);
+helmCaption.visible = false;
+app.stage.addChild(helmCaption);
+/** What the helm dial showed as last drawn (tests): the knob's push (x ahead, y rise, each in [-1, 1]), the screw's throttle, and whether it is drawn. */
+const helmShown = { x: 0, y: 0, throttle: 0, visible: false };
+/**
+ * Draws the helm dial in the scene's bottom-left corner where there is no stick under the scene (a
+ * desktop): a stick's base and knob that shows what the keys or the mouse ask for now (the knob
+ * pushed right for Ahead, up for Rise; a key, all the way), so steering with the mouse or the keys
+ * is seen on a control as a thumb on a phone's stick is, and under it a bar of the screw's throttle
+ * (right of centre ahead, left astern, green while it turns). On `m`, the mouse stick's layer.
+ */
+function drawHelmDial(m: Graphics): void {
+  helmShown.visible = helmCaption.visible = !touch;
+  if (touch) return;
+  const H = app.screen.height,
+    { r, inset } = HELM_DIAL,
+    x0 = inset,
+    y0 = H - inset - 8;
+  const keyX = keyAxis(['a', 'arrowleft'], ['d', 'arrowright']),
+    keyY = keyAxis(['s', 'arrowdown'], ['w', 'arrowup']);
+  let x = keyX !== 0 ? keyX : stickInput.x,
+    y = keyY !== 0 ? keyY : stickInput.y;
+  const len = Math.hypot(x, y);
+  if (len > 1) [x, y] = [x / len, y / len];
+  Object.assign(helmShown, { x, y, throttle: state.throttle });
+  const on = x !== 0 || y !== 0;
+  m.circle(x0, y0, r)
+    .fill({ color: 0x0b1a2e, alpha: 0.78 })
+    .stroke({ color: on ? 0xffe066 : 0x8fb8d8, width: 1.5, alpha: 0.9 });
+  m.moveTo(x0 - r + 6, y0)
+    .lineTo(x0 + r - 6, y0)
+    .moveTo(x0, y0 - r + 6)
+    .lineTo(x0, y0 + r - 6)
+    .stroke({ color: 0x8fb8d8, width: 1, alpha: 0.5 });
+  const kx = x0 + x * (r - 11),
+    ky = y0 - y * (r - 11);
+  if (on) m.moveTo(x0, y0).lineTo(kx, ky).stroke({ color: 0xffe066, width: 2, alpha: 0.8 });
+  m.circle(kx, ky, 10).fill(on ? 0xffe066 : 0xcfd8e3);
+  // The screw: a bar under the dial, filled from its middle as far as the throttle runs.
+  const bw = 2 * r,
+    by = y0 + r + 6,
+    t = Math.max(-1, Math.min(1, state.throttle));
+  m.roundRect(x0 - r, by, bw, 6, 3)
+    .fill({ color: 0x0b1a2e, alpha: 0.78 })
+    .stroke({ color: 0x8fb8d8, width: 1, alpha: 0.6 });
+  if (Math.abs(t) > 0.01) m.rect(t > 0 ? x0 : x0 + t * r, by + 1, Math.abs(t) * r, 4).fill(t > 0 ? 0x6dff9e : 0xff9e8a);
+  helmCaption.position.set(x0, y0 - r - 3);
+}
+/** Draws the mouse stick while it is dragged: its reach as a ring round the press point, a knob where the stick is; and the helm dial. */
 function drawMouseStick(): void {
   const m = mouseStickRing;
   m.clear();
+  drawHelmDial(m);
   if (mouseStick.id < 0) return;
   const kx = mouseStick.x0 + stickInput.x * MOUSE_STICK_REACH,
     ky = mouseStick.y0 - stickInput.y * MOUSE_STICK_REACH;
@@ -1777,7 +1843,7 @@ function drawDepthGauge(W: number, H: number, depth: number, order: number, bed:
   // The target's name and depth by its dot ("B 62 m"), hidden where the boat's depth is written
   // and where the pointer's badge or label at the view's edge is drawn.
   if (!gaugeTarget) {
-    gaugeTarget = gaugeText(12);
+    gaugeTarget = gaugeText(compact ? 14 : 12);
     gaugeTarget.style.fill = 0xffe066;
   }
   gaugeTarget.visible = Number.isFinite(beacon) && Math.abs(at(beacon) - yb) > 14;
@@ -1805,7 +1871,7 @@ function drawDepthGauge(W: number, H: number, depth: number, order: number, bed:
   // The figures: every 50 m left of the bar, hidden where the boat's depth is written.
   let n = 0;
   for (let d = 0; d < courseDepth; d += 50, n++) {
-    const mark = gaugeMarks[n] ?? gaugeText(10);
+    const mark = gaugeMarks[n] ?? gaugeText(compact ? 13 : 10);
     gaugeMarks[n] = mark;
     mark.text = String(d);
     mark.position.set(x0 - 5, Math.max(top + 5, at(d)));
@@ -1814,7 +1880,7 @@ function drawDepthGauge(W: number, H: number, depth: number, order: number, bed:
   }
   for (let i = n; i < gaugeMarks.length; i++) gaugeMarks[i]!.visible = false;
   if (!gaugeDepth) {
-    gaugeDepth = gaugeText(12);
+    gaugeDepth = gaugeText(compact ? 14 : 12);
     gaugeDepth.style.fill = 0xffe066;
   }
   // Named, so that it never reads as the beacon's depth when the beacon's tag hides near it.
@@ -1974,6 +2040,82 @@ function declutter(H: number, hull: readonly number[]): void {
   }
 }
 
+/** The edge marks as last drawn (tests): each hazard's kind, place (m), metres ahead of the bow, words and box (x, y, width, height, px). */
+const edgeShown: (EdgeMark & { text: string; box: number[] })[] = [];
+/** The edge marks' words ("62 m"), a pool hidden when unused. */
+const edgeTexts: Text[] = [];
+/**
+ * Draws a mark at the view's leading edge (left of the depth gauge) for each hazard beyond it
+ * (./edge-marks.ts edgeMarks: the live mines and a seabed ridge near the boat's depth, up to
+ * EDGE_MARK_REACH m ahead of the bow), at its depth on the screen (kept inside the scene's top and
+ * bottom), so a pilot sees a mine or a ridge coming seconds before it scrolls into view: a mine as a
+ * red disc with horns, a ridge as a sand-coloured peak, each with an arrow pointing off the screen
+ * and its distance ahead ("62 m"). Marks are kept off each other, the gauge's tags, the target's
+ * frame and the pointer's label. `W` x `H`:
+ * the scene, px; `k`: px/m; `cx`: the view's centre x, m; `sy`: world y to screen px; (`hx`, `hy`):
+ * the hull, m; `vx`: its speed along x, m/s (backing, the marks are at the left edge).
+ */
+function drawEdgeMarks(W: number, H: number, k: number, cx: number, sy: (y: number) => number, hx: number, hy: number, vx: number): void {
+  const heading: 1 | -1 = vx < -0.5 ? -1 : 1;
+  const edge = heading > 0 ? cx + (W / 2 - GAUGE_WIDTH - ON_SCREEN_MARGIN) / k : cx - (W / 2 - ON_SCREEN_MARGIN) / k;
+  // A ridge is measured against the deeper of the boat's depth and the depth ordered (the boat diving to a beacon low over the bed meets it there).
+  const low = Number.isFinite(state.holdY) ? Math.min(hy, state.holdY) : hy;
+  const marks = state.over ? [] : edgeMarks(edge, hx, low, mines, mineLive, (x) => seabedHeight(handles.seabed, x), heading);
+  edgeShown.length = 0;
+  const size = compact ? 14 : 13,
+    top = 14 + size,
+    bottom = H - 14 - size;
+  // Taken: the gauge's tags, the target's frame, the pointer's label and badge, then each mark placed.
+  const taken = [gauge_.depth, gauge_.target, aim.frame, ...(pointer.visible ? [aim.label, aim.badge] : [])].filter((b) => b[2]! > 0);
+  for (const [n, m] of marks.entries()) {
+    const text =
+      edgeTexts[n] ??
+      new Text({ text: '', style: { fill: 0xffffff, fontSize: size, fontWeight: '700', fontFamily: 'system-ui, sans-serif' } });
+    if (!edgeTexts[n]) {
+      edgeTexts[n] = text;
+      app.stage.addChild(text);
+    }
+    text.visible = true;
+    text.text = `${m.kind === 'ridge' ? 'ridge ' : ''}${Math.max(0, m.ahead).toFixed(0)} m`;
+    text.style.fill = m.kind === 'mine' ? 0xffc2b3 : 0xf3dcae;
+    // The arrow's tip at the edge, the icon inside it, the words inside the icon.
+    const tip = heading > 0 ? W - GAUGE_WIDTH - 6 : 6,
+      icon = tip - heading * 22,
+      w = text.width + 38,
+      h = Math.max(24, text.height + 8);
+    let y = Math.max(top, Math.min(bottom, sy(m.y)));
+    const boxAt = (yy: number) => [heading > 0 ? tip - w - 6 : tip, yy - h / 2, w + 6, h];
+    for (let tries = 0; tries < 6; tries++) {
+      const hit = taken.find((b) => overlaps(boxAt(y), b, 2));
+      if (!hit) break;
+      // Off it, downward if the mark's depth lies below the middle of what it met, else upward.
+      const down = y >= hit[1]! + hit[3]! / 2;
+      y = down ? hit[1]! + hit[3]! + h / 2 + 3 : hit[1]! - h / 2 - 3;
+      y = Math.max(top, Math.min(bottom, y));
+    }
+    const box = boxAt(y);
+    taken.push(box);
+    const red = m.kind === 'mine';
+    g.roundRect(box[0]!, box[1]!, box[2]!, box[3]!, h / 2)
+      .fill({ color: 0x06213a, alpha: 0.82 })
+      .stroke({ color: red ? 0xff6b4a : 0xd9b77a, width: 1.5 });
+    g.poly([tip, y, tip - heading * 9, y - 7, tip - heading * 9, y + 7]).fill(red ? 0xff6b4a : 0xd9b77a);
+    if (red) {
+      for (let j = 0; j < 4; j++) {
+        const a = (j * Math.PI) / 2 + Math.PI / 4;
+        g.moveTo(icon, y)
+          .lineTo(icon + 8 * Math.cos(a), y + 8 * Math.sin(a))
+          .stroke({ color: 0xd8dde3, width: 1.5 });
+      }
+      g.circle(icon, y, 5.5).fill(0xc3ccd6).stroke({ color: 0xff6b4a, width: 1.5 });
+    } else g.poly([icon - 8, y + 6, icon - 2, y - 6, icon + 1, y - 1, icon + 3, y - 4, icon + 8, y + 6]).fill(0xd9b77a);
+    text.anchor.set(heading > 0 ? 1 : 0, 0.5);
+    text.position.set(icon - heading * 14, y);
+    edgeShown.push({ ...m, text: text.text, box: [...box] });
+  }
+  for (let i = marks.length; i < edgeTexts.length; i++) edgeTexts[i]!.visible = false;
+}
+
 /** The depth gauge's tags as last drawn (tests): the boat's depth and the target's, each x, y, width, height, px (zeros while hidden). */
 const gauge_ = { depth: [0, 0, 0, 0], target: [0, 0, 0, 0] };
 
@@ -2119,7 +2261,7 @@ function drawDepthLadder(t: number, sx: (x: number) => number, sy: (y: number) =
         .lineTo(px + len, sy(y))
         .stroke({ color: 0xe8f4ff, width: big ? 2 : 1.2, alpha: 0.75 * a });
       if (big) {
-        const mark = ladderMarks[used] ?? gaugeText(11);
+        const mark = ladderMarks[used] ?? gaugeText(compact ? 13 : 11);
         ladderMarks[used++] = mark;
         mark.text = `${d} m`;
         mark.position.set(px - len - 3, sy(y));
@@ -2516,7 +2658,10 @@ function draw(): void {
     if (i === aim.index || bx < 0 || bx > W || by < 0 || by > H) continue;
     let tag = tags[tagged];
     if (!tag) {
-      tag = new Text({ text: 'beacon', style: { fill: 0xffe066, fontSize: 12, fontWeight: '600', fontFamily: 'system-ui, sans-serif' } });
+      tag = new Text({
+        text: 'beacon',
+        style: { fill: 0xffe066, fontSize: compact ? 14 : 12, fontWeight: '600', fontFamily: 'system-ui, sans-serif' },
+      });
       tag.anchor.set(0.5, 0);
       tags.push(tag);
       app.stage.addChild(tag);
@@ -2971,6 +3116,7 @@ function draw(): void {
     -seabedHeight(handles.seabed, hxw),
     aim.index >= 0 ? -handles.beacons[2 * aim.index + 1]! : Number.NaN,
   );
+  drawEdgeMarks(W, H, k, cx, sy, hxw, hyw, c.Velocity.x[e]!);
   drawHits(t, k, sx, sy, W, H, sy(hyw) - (Hh + 2.5) * k);
   // The hull's box on the screen (level, its sail included): the tags that only add are kept off it.
   const hr = Math.max(SUBMARINE.length / 2, SUBMARINE.height / 2 + 2) * k;
@@ -3005,11 +3151,11 @@ function draw(): void {
   // The depth, and the depth ordered while the boat is a metre or more from it ("depth 30 → 34 m").
   const ordered = Number.isFinite(state.holdY) && Math.abs(state.holdY + depth) >= 1 ? ` → ${(-state.holdY).toFixed(0)}` : '';
   const streak = state.streak > 1 ? ` ×${Math.min(GLOW_STREAK_MAX, state.streak)}` : '';
-  // One short line: the level ("L2"), the beacons (◯, as in the controls list), the clock and par ("0:42 · par 2:20", on a phone "◯ 2/6 0:42 par 2:20", par in small type; red once past par), the depth
+  // One short line: the level ("L2"), the beacons (◯, as in the controls list), the clock and par ("0:42 · par 2:20", on a phone "◯ 2/6 0:42 par 2:20", par in lighter type; red once past par), the depth
   // (and the depth ordered), the speed ahead or astern, the score and the hull. The depth's rate,
   // the tanks, pitch and helm go in the desktop's info column (the depth gauge shows the order);
   // on a phone it keeps to 390 px: the speed as a mark ("▶4") after the depth ("82→87 m ▶4"), the
-  // score without "pts", no skipped names, "stopped by the seabed" shortened, in 12 px type.
+  // score without "pts", no skipped names, "stopped by the seabed" shortened; the goal and the readout a line each, in 14 px type.
   const missedNames = missed.flatMap((m, i) => (m ? [beaconName(i)] : []));
   const missedText = missedNames.length > 0 && !compact ? ` (${missedNames.join(', ')} skipped)` : '';
   const goalWords =
@@ -3097,8 +3243,17 @@ shell.expose({
     /** The live mines in view: each one's halo box (x, y, width, height, px), which the tags keep off. */
     mines: mineBoxes.map((b) => [...b]),
   }),
+  /** The words drawn on the scene now (the gauge's, the ladder's, the tags, the marks): each one's text and type size, CSS px. */
+  sceneTexts: () =>
+    app.stage.children.flatMap((t) =>
+      t instanceof Text && t.visible && t.text !== '' ? [{ text: t.text, size: Number(t.style.fontSize) }] : [],
+    ),
+  /** The helm dial as last drawn (desktop): the knob's push (x ahead, y rise, in [-1, 1]), the screw's throttle and whether it is drawn. */
+  helmDial: () => ({ ...helmShown }),
   /** The camera as last drawn: centre (x, y, m), zoom (px/m), look-ahead (m, before its limit) and shake (px). */
   camera: () => ({ ...camera }),
+  /** The marks at the view's leading edge as last drawn (./edge-marks.ts): each hazard's kind, place (m), metres ahead of the bow, words and box (px). */
+  edgeMarks: () => edgeShown.map((m) => ({ ...m, box: [...m.box] })),
   /**
    * The newest hit's signs: its cause ('' before any), place (m), the label shown ('' once faded)
    * and its screen box (x, y, width, height, px), its red pill's box (px, zeros while none), the

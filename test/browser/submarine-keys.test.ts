@@ -250,20 +250,42 @@ describe('submarine keys (desktop)', () => {
     expect(g.errors).toEqual([]);
   });
 
-  it('Astern pressed while Ahead is still held backs the boat; let go, Ahead drives it again', async () => {
+  it('Astern pressed while Ahead is still held backs the boat; let go, Ahead drives it again; the helm dial shows each, and a mouse drag', async () => {
+    // The helm dial in the scene's corner (issue 34: steering showed on no control): its knob where
+    // the keys or the mouse push it (x ahead, y rise, in [-1, 1]), its bar the screw's throttle.
+    // Exact for the keys (a key pushes all the way); 0.05 for the drag (its px to the rim).
+    const dial = () =>
+      g.page.evaluate(() =>
+        (window.game as unknown as { helmDial(): { x: number; y: number; throttle: number; visible: boolean } }).helmDial(),
+      );
     await hover(g.page);
     await g.page.keyboard.down('d');
     const ahead = await frames(g.page, 1.5);
     expect(ahead.vx).toBeGreaterThan(3);
+    expect(await dial()).toMatchObject({ x: 1, y: 0, visible: true });
+    expect((await dial()).throttle).toBeGreaterThan(0.5);
     await g.page.keyboard.down('a');
     // Astern brakes the boat and backs it at up to HELM.asternShare of its top speed (./helm.ts: 6 m/s).
     const backing = await frames(g.page, 3);
     expect(backing.vx).toBeLessThan(-2);
     expect(await g.page.evaluate(() => (window.game as unknown as Sub).state.throttle)).toBeLessThan(-0.4);
+    expect(await dial()).toMatchObject({ x: -1, y: 0 });
+    expect((await dial()).throttle).toBeLessThan(-0.4);
     await g.page.keyboard.up('a');
     const again = await frames(g.page, 2);
     expect(again.vx).toBeGreaterThan(2);
     await g.page.keyboard.up('d');
+    // The mouse pressed on the sea and dragged 35 px up, half way to the rim (70 px): the knob half way up.
+    const box = (await g.page.locator('canvas').first().boundingBox())!;
+    const [px, py] = [box.x + box.width / 2, box.y + box.height / 2];
+    await g.page.mouse.move(px, py);
+    await g.page.mouse.down();
+    await g.page.mouse.move(px, py - 35, { steps: 3 });
+    await frames(g.page, 1 / 60);
+    const dragged = await dial();
+    await g.page.mouse.up();
+    expect(dragged.x).toBeCloseTo(0, 1);
+    expect(Math.abs(dragged.y - 0.5)).toBeLessThan(0.05);
     await g.page.evaluate(() => (window.game as unknown as Sub).loop.start());
     expect(g.errors).toEqual([]);
   });
