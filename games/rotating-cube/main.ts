@@ -94,6 +94,7 @@ import {
   Vector3,
 } from 'three';
 import { cubeControls, RollQueue, TAP_SLOP, touchPress } from './controls';
+import { createHintMark } from './hint-mark';
 import { bedSnap, edgeCells } from './roll-puzzle';
 import { buildRoomLook } from './room-look';
 import { type RoundEndContent, roundEnd, starText } from './round-end';
@@ -1915,12 +1916,9 @@ function updateBanner(): void {
 const HINT_AFTER = 3;
 /** The first slide of the route the status row shows (x, z, m), ringed on the floor; null when none shows. */
 let hintSpot: [number, number] | null = null;
-const hintRing = new Mesh(
-  new RingGeometry(0.3, 0.4, 40).rotateX(-Math.PI / 2),
-  new MeshBasicMaterial({ color: 0xffe27a, transparent: true, opacity: 0.9, side: DoubleSide, depthWrite: false }),
-);
-hintRing.visible = false;
-app.scene.add(hintRing);
+/** The ring on that tile and the pin over it (hint-mark.ts): the pin shows over a cube standing in front of the tile. */
+const hintMark = createHintMark(0xffe27a);
+app.scene.add(hintMark.group);
 /** The key (on a phone the arrow) that rolls the cube along level world direction `d` (0 +x, 1 -x, 4 +z, 5 -z) with the camera where it is. */
 function rollKey(d: number): string {
   const key = rollKeyOf(d);
@@ -2490,8 +2488,7 @@ function frame(): void {
     const level = Math.abs(axes[0]![1]!) < Math.abs(axes[1]![1]!) ? axes[0]! : axes[1]!;
     footprint.rotation.y = footprintThrough.rotation.y = Math.atan2(level[0]!, level[2]!);
   }
-  hintRing.visible = padLit && hintSpot !== null;
-  if (hintSpot) hintRing.position.set(hintSpot[0], 0.035, hintSpot[1]);
+  hintMark.place(padLit ? hintSpot : null, now / 1000, app.camera.quaternion);
   placeBed(padLit ? pads.pad : -1);
   {
     const tilesPad = layout.pads[Math.min(pads.pad, layout.pads.length - 1)]!;
@@ -2733,7 +2730,10 @@ shell.expose({
     chips: [...rulesChips.children].map((c) => (c as HTMLElement).dataset.face ?? ''),
   }),
   /** The ring on the floor tile the status row's route starts with (its centre x, z, m), or null when none is drawn. */
-  hintRing: (): number[] | null => (hintRing.visible ? [hintRing.position.x, hintRing.position.z] : null),
+  hintRing: (): number[] | null => (hintMark.group.visible ? [hintMark.group.position.x, hintMark.group.position.z] : null),
+  /** The hint's pin over the ringed tile: its tip (x, y, z, m), or null when no tile is ringed. */
+  hintPin: (): number[] | null =>
+    hintMark.group.visible ? [hintMark.group.position.x, hintMark.pin.position.y, hintMark.group.position.z] : null,
   /** Whether the aim marker (the arrow from the cube and the ring where a push would stop it) is drawn. */
   aimShown: (): boolean => aimRing.visible,
   /**
