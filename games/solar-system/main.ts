@@ -1274,6 +1274,7 @@ const burnGhost = (() => {
   );
   points.frustumCulled = false;
   points.visible = false;
+  geometry.setDrawRange(0, 0);
   app.scene.add(points);
   return points;
 })();
@@ -1305,10 +1306,11 @@ function drawBurn(at: readonly number[], size: number, flying: boolean): void {
   flame.position.set(at[0]!, at[1]!, at[2]!);
   // The cone's tip is along its -y: turn -y onto the way back.
   flame.quaternion.setFromUnitVectors(new Vector3(0, -1, 0), d);
-  // Several times the probe's size (a dot of a few pixels), so it reads at the map's scale.
+  // Several times the probe's size (a dot of a few pixels), so it reads at the map's scale (on a
+  // phone's narrow view ARROW_SCALE times more, as the launch arrow).
   const left = 1 - since / FLAME_MS;
-  const w = size * (1.4 + 0.8 * left);
-  flame.scale.set(w, size * (3 + 5 * left) * (0.85 + 0.3 * Math.random()), w);
+  const w = size * (1.4 + 0.8 * left) * ARROW_SCALE;
+  flame.scale.set(w, size * (3 + 5 * left) * ARROW_SCALE * (0.85 + 0.3 * Math.random()), w);
 }
 
 /** Adds the probe's heliocentric place now to its trail (every other step; thinned to half when full). */
@@ -2241,6 +2243,8 @@ const starText = (n: number): string => '★'.repeat(n) + '☆'.repeat(3 - n);
 function missWords(closest: number, zone: number, before = Number.NaN): string {
   let digits = 2;
   while (digits < 4 && Number(closest.toFixed(digits)) <= zone) digits++;
+  // A burn's change shown with the decimals that tell the two apart (up to 4).
+  if (Number.isFinite(before)) while (digits < 4 && before.toFixed(digits) === closest.toFixed(digits)) digits++;
   const was = Number.isFinite(before) ? `${before.toFixed(digits)} → ` : '';
   return `closest ${was}${closest.toFixed(digits)} AU, the ring reaches ${zone} AU`;
 }
@@ -2442,17 +2446,18 @@ function reading(m: Mission): [string, string] {
  * The reading line's verdict on the meeting at point `i` of the forecast's path (`pathCrossing`):
  * a hit when the forecast arrives ("✓ Mars will be there", the stars the speed earns), else by how
  * many days the target misses the probe there (./orbit-crossing.ts targetLag: "✗ Mars gets there
- * 23 days later", or "passed there 12 days before"), or, within a day, how close the probe passes.
+ * 23 days later", or "✗ Mars passed there 12 days before"), or, within a day, how close the probe passes.
  * A stranger read "Will Mars be there?" at some speeds with nothing saying whether it would be.
  */
 function meetingVerdict(m: Mission, i: number): [string, string] {
   const t = m.target;
-  if (forecast.outcome === 'arrived') return [`✓ ${t} will be there: a hit · ${starText(starsFor(m, aim.speed))}`, 'ok'];
+  if (forecast.outcome === 'arrived') return [`✓ ${t} will be there · ${starText(starsFor(m, aim.speed))}`, 'ok'];
   const lag = targetLag(forecast, i, crossingTarget, sunMu());
   const days = Math.round(Math.abs(lag));
   const n = `${days} day${days === 1 ? '' : 's'}`;
   if (days < 1) return [`✗ misses ${t}: ${missWords(forecast.closest, m.zone)}`, 'bad'];
-  return [lag > 0 ? `✗ misses: ${t} gets there ${n} later` : `✗ misses: ${t} passed there ${n} before`, 'bad'];
+  // Short: the line should stay on one line at desktop size where it can.
+  return [lag > 0 ? `✗ ${t} gets there ${n} later` : `✗ ${t} passed there ${n} before`, 'bad'];
 }
 /** The path's crossings of the target's orbit (`reading`), indices into the forecast's path. */
 const crossingList: number[] = [];
