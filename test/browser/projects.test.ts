@@ -327,6 +327,9 @@ describe('projects', () => {
     const g = await h.openGame('solar-system', { viewport: { width: 1280, height: 800 }, query: { rate: 0 } });
     type Solar = { mission(): { number: number; phase: string }; startMission(index: number): void };
     const number = () => g.page.evaluate(() => (window.game as unknown as Solar).mission().number);
+    const startSpeed = await g.page.evaluate(
+      () => (window.game as unknown as { mission(): { aim: { speed: number } } }).mission().aim.speed,
+    );
     // A first visit (no storage) starts at mission 1, its line reading the launch's path (without the
     // ring at arrival) and its verdict: ✗, short of Mars's orbit.
     expect(await number()).toBe(1);
@@ -402,6 +405,14 @@ describe('projects', () => {
       return { speed, line: document.querySelector('[data-hud="plan"]')?.textContent ?? '' };
     });
     expect(pressed.line).toBe(`Launch ${(pressed.speed + 0.1).toFixed(1)} km/s along the Earth’s path → …`);
+    // R restarts the mission: its first day (the wait undone) and its starting launch speed (it kept
+    // the last speed, where a player expected a reset; T keeps it).
+    await g.press('r');
+    const restarted = await g.waitFor(() => {
+      const game = window.game as unknown as Aiming & { world: { time: number } };
+      return game.world.time === 0 ? game.mission().aim.speed : null;
+    }, null);
+    expect(restarted).toBe(startSpeed);
     // Mission 4 started, then the page reloaded: mission 4 again (it went back to mission 1).
     await g.page.evaluate(() => (window.game as unknown as Solar).startMission(3));
     await g.page.reload();
