@@ -65,31 +65,40 @@ export function touchPress(onCube: boolean, movedPx: number): 'flick' | 'push' |
   return moved ? 'none' : 'push';
 }
 
+/** Room mode: the most roll presses that wait for the cube while it is busy (RollQueue). */
+export const ROLL_QUEUE_MAX = 2;
+
 /**
- * Room mode: a roll key pressed while the cube is busy (a roll still turning, or the cube not yet at
- * rest) is kept as the one pending roll instead of being lost, and pressed again once the cube rests:
- * a phone's second ▼ tap during a slow roll rolls it on. A later press while busy replaces the pending one.
+ * Room mode: roll keys pressed while the cube is busy (a roll still turning, or the cube not yet at
+ * rest) wait here, up to ROLL_QUEUE_MAX of them, and are pressed in order as the cube comes to rest,
+ * so a quick run of presses rolls once for each (a stranger lost one press in five to a queue of one).
+ * A press beyond the queue's room replaces its last key (the latest wish wins). With nothing waiting, a
+ * roll key still held when the cube rests rolls it again: holding a key rolls one cell after another,
+ * each landing square, at the rolls' own pace rather than the keyboard's repeat rate.
  */
 export class RollQueue {
-  /** The roll key waiting ('w', 'a', 's' or 'd'), or '' for none. */
-  pending = '';
+  /** The roll keys waiting ('w', 'a', 's' or 'd'), oldest first; at most ROLL_QUEUE_MAX. */
+  readonly pending: string[] = [];
   /**
-   * A fresh press of roll key `key` with the cube `busy` or not. @returns whether it acts now (not
-   * busy: any pending roll is dropped, this one replaces it); when busy it waits as the pending roll.
+   * A fresh press of roll key `key` with the cube `busy` or not. @returns whether it acts now (the
+   * cube free and nothing waiting); otherwise it waits at the queue's end (or replaces its last key when full).
    */
   press(key: string, busy: boolean): boolean {
-    this.pending = busy ? key : '';
-    return !busy;
+    if (!busy && this.pending.length === 0) return true;
+    if (this.pending.length < ROLL_QUEUE_MAX) this.pending.push(key);
+    else this.pending[this.pending.length - 1] = key;
+    return false;
   }
-  /** The pending key to press now that the cube is free (`busy` false), which empties the queue; '' while busy or with none. */
-  take(busy: boolean): string {
+  /**
+   * The key to press now that the cube is free (`busy` false): the oldest waiting (taken out of the
+   * queue), else the last of the roll keys still `held` (in the order they went down), else ''; '' while busy.
+   */
+  take(busy: boolean, held: readonly string[] = []): string {
     if (busy) return '';
-    const key = this.pending;
-    this.pending = '';
-    return key;
+    return this.pending.shift() ?? held[held.length - 1] ?? '';
   }
-  /** Forgets the pending roll (a new world). */
+  /** Forgets the waiting rolls (a new world). */
   clear(): void {
-    this.pending = '';
+    this.pending.length = 0;
   }
 }

@@ -94,6 +94,7 @@ import {
   Vector3,
 } from 'three';
 import { cubeControls, RollQueue, TAP_SLOP, touchPress } from './controls';
+import { createHintMark } from './hint-mark';
 import { bedSnap, edgeCells } from './roll-puzzle';
 import { buildRoomLook } from './room-look';
 import { type RoundEndContent, roundEnd, starText } from './round-end';
@@ -220,7 +221,7 @@ const FLIP_TAP_TIME = 0.35;
 const tapUntil = new Map<string, number>();
 /** Torque the keys ask for now, N m, world frame (read by the forces-stage system). */
 const keyTorque = new Float64Array(3);
-/** Room mode: the unit axis the roll keys turn the cube about (world frame), or zero when none is held. */
+/** Room mode: the unit axis the roll keys turn the cube about (world frame), or zero when no roll runs. */
 const rollAxis = new Float64Array(3);
 /** Torque handed to the forces stage each step, N m (keyTorque, or in the room the governed roll torque). */
 const stepTorque = new Float64Array(3);
@@ -233,7 +234,7 @@ const yawKeeper = new YawKeeper();
 /**
  * The torque of this step, N m, world frame: on the pivot keyTorque; in the room ROLL_TORQUE (times
  * the panel's key torque over its default) about rollAxis while the cube turns about that axis slower
- * than ROLL_SPIN_MAX, else none (a held key rolls it at a steady pace), plus the yaw keeper's torque
+ * than ROLL_SPIN_MAX, else none (a roll turns at a steady pace), plus the yaw keeper's torque
  * about the vertical, at most as large.
  */
 function torqueNow(world: PhysicsWorld): Float64Array {
@@ -1136,21 +1137,33 @@ app.scene.add(pivotPost, pivotFoot);
 const held = new Set<string>();
 /** Keys pressed since the last frame (a press and release between two frames still counts once). */
 const pressed = new Set<string>();
-/** Keys in `pressed` only by a held key's repeat: a repeat while the cube is busy is not queued (rollQueue). */
+/** Keys in `pressed` only by a held key's repeat: in the room the game repeats a held roll key itself (RollQueue `take`). */
 const repeated = new Set<string>();
 const TORQUE_KEYS = ['w', 's', 'a', 'd', 'q', 'e'];
+const ROLL_KEYS = ['w', 'a', 's', 'd'];
 /**
- * Room mode, before the keys are read: a fresh roll press while a roll's latch runs or the cube is not
- * still is taken out of `pressed` and queued (a held key still torques it, as before); once the cube
- * rests, the queued key is pressed (unless it is still held, which rolls it anyway).
+ * Room mode, before the keys are read: of the roll keys pressed since the last frame, in the order
+ * they went down, the first acts if the cube is free (still, no roll's latch running) and nothing
+ * waits; the rest wait in `rollQueue` and are taken out of `pressed`, as are a held key's repeats.
+ * Once the cube is free with no press acting, the oldest waiting key is pressed, or else the last roll
+ * key to go down of those still held (so a held key rolls one cell after another).
  */
 function queueRolls(): void {
-  const world = shell.world,
-    busy = latchUntil > world.time || !cubeStill(world, handles.body);
-  for (const k of ['w', 'a', 's', 'd']) if (pressed.has(k) && !repeated.has(k) && !rollQueue.press(k, busy)) pressed.delete(k);
+  const world = shell.world;
+  let busy = latchUntil > world.time || !cubeStill(world, handles.body),
+    acted = false;
+  for (const k of [...pressed]) {
+    if (!ROLL_KEYS.includes(k)) continue;
+    if (repeated.has(k) || !rollQueue.press(k, busy)) pressed.delete(k);
+    else acted = busy = true;
+  }
   repeated.clear();
-  const next = rollQueue.take(busy);
-  if (next && !held.has(next)) pressed.add(next);
+  if (acted) return;
+  const next = rollQueue.take(
+    busy,
+    [...held].filter((k) => ROLL_KEYS.includes(k)),
+  );
+  if (next) pressed.add(next);
 }
 function typing(target: EventTarget | null): boolean {
   const el = target as HTMLElement | null;
@@ -1164,7 +1177,8 @@ window.addEventListener('keydown', (event) => {
   clearAim();
   if (k !== 'q' && k !== 'e') hideRules();
   held.add(k);
-  // A held key's repeats refresh a roll's latch; a quarter turn (Q, E) is one a press, and goes on by itself while held.
+  // A held key's repeats keep a flip torque on (queueRolls drops them in the room); a quarter turn
+  // (Q, E) is one a press, and goes on by itself while held.
   if (!event.repeat || (k !== 'q' && k !== 'e')) pressed.add(k);
   if (event.repeat) repeated.add(k);
   event.preventDefault();
@@ -1319,8 +1333,8 @@ function snapToEdge(ax: number, az: number): void {
 }
 
 /**
- * Room mode, after rollAxis is set from the keys held: on a new roll key press (`fresh`) latches the
- * level part of rollAxis and sets a cube at rest turning over its edge (scene.ts `rollStart`); while no roll key is held (`rolling` false) and the latch is on, rolls on
+ * Room mode, after rollAxis is set from the roll keys pressed this frame: on a new roll key press (`fresh`) latches the
+ * level part of rollAxis and sets a cube at rest turning over its edge (scene.ts `rollStart`); on the frames after the press (`rolling` false) while the latch is on, rolls on
  * about the latched axis until the cube has turned ROLL_LATCH_ANGLE since the press or
  * ROLL_LATCH_TIME s have passed (against a wall it may never turn that far).
  */
@@ -1375,8 +1389,11 @@ function updateKeyTorque(): void {
   if (params.mode === 'room') queueRolls();
   else repeated.clear();
   const newRoll = pressed.has('w') || pressed.has('a') || pressed.has('s') || pressed.has('d');
-  const pitch = (on('s') ? 1 : 0) - (on('w') ? 1 : 0);
-  const yaw = (on('d') ? 1 : 0) - (on('a') ? 1 : 0);
+  // In the room a roll key acts by its press (fresh, waiting or repeated by queueRolls) and the
+  // roll's latch, not by being held: a held key's torque rolled the cube on past its cell.
+  const rollOn = (k: string): boolean => (params.mode === 'room' ? pressed.has(k) : on(k));
+  const pitch = (rollOn('s') ? 1 : 0) - (rollOn('w') ? 1 : 0);
+  const yaw = (rollOn('d') ? 1 : 0) - (rollOn('a') ? 1 : 0);
   const roll = (on('q') ? 1 : 0) - (on('e') ? 1 : 0);
   // Room: Q and E turn the cube a quarter turn a press, and on while held (the next quarter once the turn is near its end).
   if (params.mode === 'room' && roll !== 0 && (pressed.has('q') || pressed.has('e') || !yawKeeper.turning)) {
@@ -1899,12 +1916,9 @@ function updateBanner(): void {
 const HINT_AFTER = 3;
 /** The first slide of the route the status row shows (x, z, m), ringed on the floor; null when none shows. */
 let hintSpot: [number, number] | null = null;
-const hintRing = new Mesh(
-  new RingGeometry(0.3, 0.4, 40).rotateX(-Math.PI / 2),
-  new MeshBasicMaterial({ color: 0xffe27a, transparent: true, opacity: 0.9, side: DoubleSide, depthWrite: false }),
-);
-hintRing.visible = false;
-app.scene.add(hintRing);
+/** The ring on that tile and the pin over it (hint-mark.ts): the pin shows over a cube standing in front of the tile. */
+const hintMark = createHintMark(0xffe27a);
+app.scene.add(hintMark.group);
 /** The key (on a phone the arrow) that rolls the cube along level world direction `d` (0 +x, 1 -x, 4 +z, 5 -z) with the camera where it is. */
 function rollKey(d: number): string {
   const key = rollKeyOf(d);
@@ -2474,8 +2488,7 @@ function frame(): void {
     const level = Math.abs(axes[0]![1]!) < Math.abs(axes[1]![1]!) ? axes[0]! : axes[1]!;
     footprint.rotation.y = footprintThrough.rotation.y = Math.atan2(level[0]!, level[2]!);
   }
-  hintRing.visible = padLit && hintSpot !== null;
-  if (hintSpot) hintRing.position.set(hintSpot[0], 0.035, hintSpot[1]);
+  hintMark.place(padLit ? hintSpot : null, now / 1000, app.camera.quaternion);
   placeBed(padLit ? pads.pad : -1);
   {
     const tilesPad = layout.pads[Math.min(pads.pad, layout.pads.length - 1)]!;
@@ -2717,7 +2730,10 @@ shell.expose({
     chips: [...rulesChips.children].map((c) => (c as HTMLElement).dataset.face ?? ''),
   }),
   /** The ring on the floor tile the status row's route starts with (its centre x, z, m), or null when none is drawn. */
-  hintRing: (): number[] | null => (hintRing.visible ? [hintRing.position.x, hintRing.position.z] : null),
+  hintRing: (): number[] | null => (hintMark.group.visible ? [hintMark.group.position.x, hintMark.group.position.z] : null),
+  /** The hint's pin over the ringed tile: its tip (x, y, z, m), or null when no tile is ringed. */
+  hintPin: (): number[] | null =>
+    hintMark.group.visible ? [hintMark.group.position.x, hintMark.pin.position.y, hintMark.group.position.z] : null,
   /** Whether the aim marker (the arrow from the cube and the ring where a push would stop it) is drawn. */
   aimShown: (): boolean => aimRing.visible,
   /**

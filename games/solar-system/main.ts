@@ -6,10 +6,11 @@
  *
  * The game (./missions.ts): each mission names a planet. The player turns the launch arrow at the
  * Earth and sets the launch speed while time waits; dots show at once where the probe will go. The
- * player reads the launch, not a verdict, until a flight of the mission fails: the dots run to
+ * player reads the launch on the map until a flight of the mission fails: the dots run to
  * where the path meets the target's orbit, the target's own dots to where it is that day, each end
  * named with the day ("probe on day 259", "Mars on day 259"; ./orbit-crossing.ts), and the status
- * line says how far out (in) the path gets or the day it is at the orbit. After a failed try (or
+ * line says how far out (in) the path gets, or the day it is at the orbit and whether the planet is
+ * there then (a hit, or how many days before or after the probe it gets there). After a failed try (or
  * with ?verdict=1) a ghost ring, the arrival zone's true edge, shows where the planet will be at
  * the closest approach ("Mars at arrival") with the probe's place then, inside the ring exactly
  * when it arrives, and the status line gives the same verdict (and the stars the speed earns); in
@@ -39,8 +40,8 @@
  * planets), at most MAX_STEPS_PER_TICK of them (a faster rate then runs slower than asked).
  * Keys: ← → turn the launch, ↑ ↓ its speed (in flight: burns in / out, faster / slower), Space
  * launch, W wait (held: time runs, slow near a launch window; tap: 10 days on), H hint, Enter next mission or try again, T try again, [ ] slower / faster, D distances,
- * 1 2 3 views, E sizes, P pause, N single step, R reset (back to the last start: the first date, or
- * the last launch after a Try again).
+ * 1 2 3 views, E sizes, P pause, N single step, R restart the mission (its first date and starting
+ * launch; T keeps the last launch).
  * URL: ?mission=1..7, ?verdict=1 (the verdict from the start), ?rate=days-per-second while aiming (0..400, default 0),
  * ?step=hours (0.25|1|6|24), ?integrator=name,
  * ?date=ISO date, ?distances=compressed|true.
@@ -114,6 +115,7 @@ import {
   type Aim,
   BURN_STEP,
   type BurnDirection,
+  burnDirection,
   burnProbe,
   CORRECTION_FUEL,
   checkFlight,
@@ -136,7 +138,7 @@ import {
   starsFor,
   TARGET_TRACK,
 } from './missions';
-import { meetingPoint, orbitCrossings, orbitRadiusToward, orbitReach, pathDay } from './orbit-crossing';
+import { meetingPoint, orbitCrossings, orbitRadiusToward, orbitReach, pathDay, targetLag } from './orbit-crossing';
 import { type TagBox, tagPlace } from './tag-place';
 import { heldWaitRate, NEAR_WINDOW_DAYS, nextLaunchWindow, WAIT_TAP_DAYS } from './wait-pace';
 
@@ -230,6 +232,8 @@ function parseDate(text: string): number {
 
 /** A fresh world from the ephemeris at startMs with the chosen scheme and step; any flight is over. */
 function createWorld(): PhysicsWorld {
+  // The player's reset (R) goes back to the mission's first day (`playerReset` then sets its launch).
+  if (!ownReset && worldSerial > 0) startMs = missionStartMs;
   const options = { stepHours: Number(params.step), integrator: params.integrator, date: startMs };
   const world = createPhysicsWorld(solarSystem.worldOptions(options));
   handles = solarSystem.build(world, options);
@@ -368,8 +372,9 @@ let failedTries = 0;
  * Whether the aim shows the forecast's verdict: the ring where the target will be at the closest
  * approach, the probe's place then, ✓ or ✗ and the hint's presses. Before a mission's first failed
  * try the player reads the map instead (the probe's path to the target's orbit and the day it gets
- * there, the target's own path to that day): judging the launch is the game, and the verdict a
- * check for every press of ↑ made it a search for the ✓.
+ * there, the target's own path to that day, and the line's verdict in days, `meetingVerdict`):
+ * judging the launch on the map is the game, and the ring a check for every press of ↑ made it a
+ * search for the ✓.
  */
 const verdictShown = (): boolean => verdictFromStart || failedTries > 0;
 /** Most points of the probe's trail. */
@@ -515,8 +520,33 @@ function startMission(index: number): void {
 /** Restarts the current mission at the date it began (the panel's button): a fresh world from the ephemeris there. */
 function restartMission(): void {
   startMs = missionStartMs;
-  shell.reset();
+  resetWorld();
   startMission(missionIndex);
+}
+
+/** Whether the page itself is replacing the world now (`resetWorld`); else a reset is the R key's or the toolbar's ↺. */
+let ownReset = false;
+/** A new world from startMs (a retry, a restart, a new date), not read as the player's reset. */
+function resetWorld(): void {
+  ownReset = true;
+  try {
+    shell.reset();
+  } finally {
+    ownReset = false;
+  }
+}
+
+/**
+ * R (or the toolbar's ↺): the mission from its start, its first day and its starting launch, as a
+ * player expects of a reset (it went back to the last launch's moment with the last speed kept,
+ * which Try again (T) does). The tries made so far still count: the verdict stays shown after a
+ * failed one, and the score's first-try part is not earned again.
+ */
+function playerReset(): void {
+  const tries = { launches, failedTries };
+  startMission(missionIndex);
+  ({ launches, failedTries } = tries);
+  updateStatus(true);
 }
 
 /**
@@ -642,7 +672,7 @@ function retry(): void {
   hideCard();
   const keep = { ...aim };
   startMs = launchMs;
-  shell.reset();
+  resetWorld();
   Object.assign(aim, keep);
   updateStatus(true);
 }
@@ -656,9 +686,24 @@ function advance(): void {
   } else retry();
 }
 
+/** The course's closest approach (AU) and forecast key before the last run of burns (`burn`). */
+let closestBeforeBurn = Number.NaN,
+  keyBeforeBurn = '';
+/**
+ * For a while after a burn (GHOST_MS) once the course after it is forecast, the closest approach
+ * before it (AU), which the line shows going to the new one ("closest 0.53 → 0.52 AU"); else NaN.
+ * A burn of 0.05 km/s moves the dots little.
+ */
+function burnChange(): number {
+  if (!(performance.now() - lastBurnDone < GHOST_MS) || forecastKey === keyBeforeBurn) return Number.NaN;
+  return closestBeforeBurn;
+}
+
 /** Least real time between two burns, ms; performance.now() of the last. */
 const BURN_GAP_MS = 200;
 let lastBurn = -Infinity;
+/** performance.now() of the last burn that used fuel. */
+let lastBurnDone = -Infinity;
 
 /**
  * A mid-course burn of BURN_STEP km/s (./missions.ts burnProbe) while the probe flies: the new
@@ -670,8 +715,19 @@ function burn(direction: BurnDirection): void {
   const t = performance.now();
   if (t - lastBurn < BURN_GAP_MS) return;
   lastBurn = t;
+  // The course before the burn stays drawn, dim, for a while (the first of a run of presses keeps it).
+  if (t - lastBurnDone > GHOST_MS) {
+    keepBurnGhost();
+    closestBeforeBurn = forecastKey.startsWith('flight') ? forecast.closest : Number.NaN;
+    keyBeforeBurn = forecastKey;
+  }
+  heliocentricState(shell.world, handles, flight.probe, state6);
+  burnDirection(state6, direction, burnPush);
   if (burnProbe(shell.world, handles, flight, direction, BURN_STEP, plan) > 0) {
     flightDaysPerSecond = flightRate(flight.deadline);
+    lastBurnDone = t;
+    // A burn is heard: a short whoosh and the chime.
+    sound.launch(0.3);
     sound.chime(660, 0.08);
   } else sound.chime(180, 0.1);
   updateStatus(true);
@@ -719,6 +775,7 @@ const game = await startThreeGame({
     { keys: 'W', action: 'wait: hold to run time (slow near a launch window); tap for 10 days', touch: 'Wait button', card: false },
     { keys: 'H', action: 'hint: what to try', touch: 'Hint button', card: false },
     { keys: 'Click', action: 'aim the launch at a point', touch: 'Tap' },
+    { keys: 'R', action: 'restart the mission: its first day and launch (T tries the last launch again)', card: false },
   ],
   keys: [
     { key: 'ArrowLeft', label: 'turn left', action: () => turn(-TURN_STEP), repeat: true },
@@ -1191,6 +1248,70 @@ function zoneEdge(line: LineLoop, cx: number, cy: number, cz: number, r: number,
 const trailLine = dynamicLine(TRAIL_POINTS, new LineBasicMaterial({ color: 0xfff1b8, transparent: true, opacity: 0.85 }));
 const probeMesh = new Mesh(sphere, new MeshBasicMaterial({ color: 0xffffff }));
 app.scene.add(probeMesh);
+/** How long a burn's flame shows, and the course before it (`burnGhost`), after the burn, ms. */
+const FLAME_MS = 900,
+  GHOST_MS = 4000;
+/**
+ * A burn's flame: an orange cone out of the probe's back, against the burn's push (`burnPush`),
+ * shown FLAME_MS after each burn and shrinking; a stranger saw nothing happen at a burn.
+ */
+const flame = new Mesh(
+  // Its base at the probe, its tip 2 units along -y.
+  new ConeGeometry(0.5, 2, 16).rotateX(Math.PI).translate(0, -1, 0),
+  new MeshBasicMaterial({ color: 0xffa040, transparent: true, opacity: 0.95, blending: AdditiveBlending, depthWrite: false }),
+);
+flame.visible = false;
+app.scene.add(flame);
+/** The last burn's push, a heliocentric unit vector (./missions.ts burnDirection). */
+const burnPush = new Float64Array(3);
+/** The course's dots just before the last burn, drawn dim for GHOST_MS so the burn's change to the course shows. */
+const burnGhost = (() => {
+  const geometry = new BufferGeometry();
+  geometry.setAttribute('position', new Float32BufferAttribute(new Float32Array(forecast.path.length), 3));
+  const points = new Points(
+    geometry,
+    new PointsMaterial({ color: 0x9fd3ff, size: 3, sizeAttenuation: false, map: DISC, alphaTest: 0.2, transparent: true, opacity: 0.35 }),
+  );
+  points.frustumCulled = false;
+  points.visible = false;
+  geometry.setDrawRange(0, 0);
+  app.scene.add(points);
+  return points;
+})();
+/** Keeps the course's dots drawn now as the ghost of the course before a burn. */
+function keepBurnGhost(): void {
+  const from = planDots.geometry.getAttribute('position') as Float32BufferAttribute;
+  const to = burnGhost.geometry.getAttribute('position') as Float32BufferAttribute;
+  (to.array as Float32Array).set(from.array as Float32Array);
+  to.needsUpdate = true;
+  burnGhost.geometry.setDrawRange(0, planDotsShown);
+}
+const flameTip = [0, 0, 0];
+/**
+ * Draws the burn's flame at the probe (display place `at`, probe radius `size`, scene units) and the
+ * ghost of the course before it, each for its time after the last burn that used fuel (`lastBurnDone`).
+ */
+function drawBurn(at: readonly number[], size: number, flying: boolean): void {
+  const since = performance.now() - lastBurnDone;
+  flame.visible = flying && since < FLAME_MS;
+  burnGhost.visible = flying && since < GHOST_MS;
+  if (burnGhost.visible) (burnGhost.material as PointsMaterial).opacity = 0.45 * (1 - since / GHOST_MS);
+  if (!flame.visible || !flight) return;
+  // The flame points against the push: its direction on the display from the probe's place and a
+  // point a little behind it (the display squeezes distances, so the push is carried through it).
+  heliocentricState(shell.world, handles, flight.probe, state6);
+  const e = 0.02 * Math.hypot(state6[0]!, state6[1]!, state6[2]!);
+  place(state6[0]! - e * burnPush[0]!, state6[1]! - e * burnPush[1]!, state6[2]! - e * burnPush[2]!, flameTip);
+  const d = new Vector3(flameTip[0]! - at[0]!, flameTip[1]! - at[1]!, flameTip[2]! - at[2]!).normalize();
+  flame.position.set(at[0]!, at[1]!, at[2]!);
+  // The cone's tip is along its -y: turn -y onto the way back.
+  flame.quaternion.setFromUnitVectors(new Vector3(0, -1, 0), d);
+  // Several times the probe's size (a dot of a few pixels), so it reads at the map's scale (on a
+  // phone's narrow view ARROW_SCALE times more, as the launch arrow).
+  const left = 1 - since / FLAME_MS;
+  const w = size * (1.4 + 0.8 * left) * ARROW_SCALE;
+  flame.scale.set(w, size * (3 + 5 * left) * ARROW_SCALE * (0.85 + 0.3 * Math.random()), w);
+}
 
 /** Adds the probe's heliocentric place now to its trail (every other step; thinned to half when full). */
 function recordTrail(world: PhysicsWorld): void {
@@ -1832,8 +1953,10 @@ function drawLaunch(world: PhysicsWorld): void {
     place(state6[0]!, state6[1]!, state6[2]!, scratch3);
     probeMesh.position.set(scratch3[0]!, scratch3[1]!, scratch3[2]!);
     probeMesh.scale.setScalar(viewHalf * 0.006);
+    drawBurn(scratch3, viewHalf * 0.006, true);
     project(probeI, 'probe', scratch3[0]!, scratch3[1]!, scratch3[2]!, viewHalf * 0.006, true);
   } else {
+    drawBurn(scratch3, 0, false);
     project(probeI, 'probe', 0, 0, 0, 0, false);
   }
 }
@@ -2114,12 +2237,16 @@ function setPadLabels(which: 'aim' | 'burn'): void {
 const starText = (n: number): string => '★'.repeat(n) + '☆'.repeat(3 - n);
 /**
  * A miss put in words: the closest approach (AU) with enough decimals that it reads as outside the
- * ring's radius `zone` (0.104 against 0.1 must not show as "0.10 ... the ring is 0.1").
+ * ring's radius `zone` (0.104 against 0.1 must not show as "0.10 ... the ring is 0.1"), after the
+ * closest approach `before` a burn changed it, when given ("closest 0.53 → 0.52 AU").
  */
-function missWords(closest: number, zone: number): string {
+function missWords(closest: number, zone: number, before = Number.NaN): string {
   let digits = 2;
   while (digits < 4 && Number(closest.toFixed(digits)) <= zone) digits++;
-  return `closest ${closest.toFixed(digits)} AU, the ring reaches ${zone} AU`;
+  // A burn's change shown with the decimals that tell the two apart (up to 4).
+  if (Number.isFinite(before)) while (digits < 4 && before.toFixed(digits) === closest.toFixed(digits)) digits++;
+  const was = Number.isFinite(before) ? `${before.toFixed(digits)} → ` : '';
+  return `closest ${was}${closest.toFixed(digits)} AU, the ring reaches ${zone} AU`;
 }
 const aimWords = (a: number): string =>
   Math.abs(a) < 1
@@ -2259,7 +2386,7 @@ function verdict(m: Mission): [string, string] {
     return [`✗ misses ${m.target}: ${missWords(f.closest, m.zone)}${when}${scheme}`, 'bad'];
   }
   if (f.outcome === 'arrived') return [`✓ arrives on day ${Math.round(f.end)}${scheme}`, 'ok'];
-  return [`✗ misses ${m.target}: ${missWords(f.closest, m.zone)}${scheme}`, 'bad'];
+  return [`✗ misses ${m.target}: ${missWords(f.closest, m.zone, burnChange())}${scheme}`, 'bad'];
 }
 
 /** G M_sun in the world now, AU^3/day^2. */
@@ -2282,19 +2409,20 @@ function pathCrossing(m: Mission): number {
 }
 
 /**
- * The line's end while aiming before the verdict shows (`verdictShown`): what the launch's path
- * does, to read against the map, not whether it arrives: short of the target's orbit (how far it
- * gets), or the day it meets the orbit line, and the stars its speed would earn.
+ * The line's end while aiming before the full verdict shows (`verdictShown`: the ring at arrival on
+ * the map): what the launch's path does, to read against the map, and its verdict: short of the
+ * target's orbit (how far it gets), or the day it meets the orbit line and whether the target is
+ * there then (`meetingVerdict`: a hit, or by how many days it misses).
  */
 function reading(m: Mission): [string, string] {
   const f = forecast;
-  if (f.outcome === 'sun') return ['falls into the Sun', 'bad'];
+  if (f.outcome === 'sun') return ['✗ falls into the Sun', 'bad'];
   const i = pathCrossing(m);
   const t = m.target;
   if (i < 0)
     return m.distance > 1
-      ? [`goes out only to ${f.farthest.toFixed(2)} AU from the Sun, short of ${t}’s orbit`, 'edge']
-      : [`falls in only to ${f.nearest.toFixed(2)} AU from the Sun, short of ${t}’s orbit`, 'edge'];
+      ? [`✗ goes out only to ${f.farthest.toFixed(2)} AU from the Sun, short of ${t}’s orbit`, 'edge']
+      : [`✗ falls in only to ${f.nearest.toFixed(2)} AU from the Sun, short of ${t}’s orbit`, 'edge'];
   // The path crosses the orbit once going out and once coming back in (more on a path that goes
   // round again); the day given is the crossing where the target is then nearest (./orbit-crossing.ts
   // meetingPoint). Each speed moves the target's place on each crossing, so the crossing picked can
@@ -2310,7 +2438,26 @@ function reading(m: Mission): [string, string] {
   const which = ` ${crossingWay(f, i, crossingList.includes(i))}`;
   // Short enough for the line to stay on one line at desktop size.
   const also = others.length > 0 ? ` (${others.join(', ')}, ${t} farther then)` : '';
-  return [`is at ${t}’s orbit on day ${day}${which}${also}. Will ${t} be there? ${starText(starsFor(m, aim.speed))} if so`, ''];
+  const [judged, cls] = meetingVerdict(m, i);
+  return [`is at ${t}’s orbit on day ${day}${which}${also}. ${judged}`, cls];
+}
+
+/**
+ * The reading line's verdict on the meeting at point `i` of the forecast's path (`pathCrossing`):
+ * a hit when the forecast arrives ("✓ Mars will be there", the stars the speed earns), else by how
+ * many days the target misses the probe there (./orbit-crossing.ts targetLag: "✗ Mars gets there
+ * 23 days later", or "✗ Mars passed there 12 days before"), or, within a day, how close the probe passes.
+ * A stranger read "Will Mars be there?" at some speeds with nothing saying whether it would be.
+ */
+function meetingVerdict(m: Mission, i: number): [string, string] {
+  const t = m.target;
+  if (forecast.outcome === 'arrived') return [`✓ ${t} will be there · ${starText(starsFor(m, aim.speed))}`, 'ok'];
+  const lag = targetLag(forecast, i, crossingTarget, sunMu());
+  const days = Math.round(Math.abs(lag));
+  const n = `${days} day${days === 1 ? '' : 's'}`;
+  if (days < 1) return [`✗ misses ${t}: ${missWords(forecast.closest, m.zone)}`, 'bad'];
+  // Short: the line should stay on one line at desktop size where it can.
+  return [lag > 0 ? `✗ ${t} gets there ${n} later` : `✗ ${t} passed there ${n} before`, 'bad'];
 }
 /** The path's crossings of the target's orbit (`reading`), indices into the forecast's path. */
 const crossingList: number[] = [];
@@ -2733,7 +2880,7 @@ const panel = createPanel(
       onChange: () => {
         try {
           startMs = parseDate(params.date);
-          shell.reset();
+          resetWorld();
           startMission(missionIndex);
         } catch (error) {
           shell.hud.showError(String((error as Error).message));
@@ -2753,10 +2900,11 @@ const panel = createPanel(
     'More keys: Enter next mission / try again; T try again; [ ] time slower / faster; 1 2 3 views; D distances; E sizes. Right-drag turns the view, the wheel zooms.';
   panel.gui.domElement.append(note);
 }
-// R (the shell's reset) goes back to startMs: fresh orbits (the forecast's key names the world).
+// A new world: fresh orbits (the forecast's key names the world); the player's R restarts the mission.
 shell.onWorldChange(() => {
   orbitsAt = -Infinity;
   hideCard();
+  if (!ownReset) playerReset();
 });
 // A reload goes on where the player was (./resumeMission); ?mission= picks one.
 if (!search.has('mission')) missionIndex = resumeMission();
@@ -2774,6 +2922,11 @@ shell.expose({
   },
   /** Days per real second time runs at now, and real ms since the last burn (Infinity: none). */
   rate: () => ({ days: currentRate(), sinceBurn: performance.now() - lastBurn }),
+  /**
+   * A burn's feedback as last drawn: whether the flame shows at the probe, whether the course before
+   * the burn shows as dim dots, and how many of them.
+   */
+  burnLook: () => ({ flame: flame.visible, ghost: burnGhost.visible, ghostDots: burnGhost.geometry.drawRange.count }),
   /** Sets the aiming rate, simulated days per real second, clamped to [0, 400]. */
   setRate,
   /** Runs time to the next launch window and stops there (not the player's Wait, which never stops there). */

@@ -168,3 +168,43 @@ export function pathDay(forecast: Forecast, index: number): number {
     throw new RangeError(`pathDay: index must be a whole number in [0, ${forecast.points - 1}], got ${index}`);
   return index === forecast.points - 1 ? forecast.end : forecast.from + index * forecast.every;
 }
+
+const lagAt = new Float64Array(6);
+
+/**
+ * How many days after the probe the target gets to point `index` of `forecast`'s path (where the
+ * page compares them, `meetingPoint`): the angle about the target's orbit normal from the target's
+ * place on the probe's day (its two-body Kepler orbit from `target`) to that point, over the
+ * target's angular speed there, refined a few times on the orbit. Positive: the target is still to
+ * come (the probe is early); negative: it passed there before the probe (the probe is late). Turned
+ * into the preview's verdict before a first try: "Mars gets there 23 days after the probe".
+ * @returns days, in (-P / 2, P / 2] of the target's period P about.
+ * @throws RangeError (from `pathDay`) when index is not a point of the path.
+ */
+export function targetLag(forecast: Forecast, index: number, target: ArrayLike<number>, mu: number): number {
+  const day = pathDay(forecast, index);
+  const p = forecast.path,
+    px = p[3 * index]!,
+    py = p[3 * index + 1]!,
+    pz = p[3 * index + 2]!;
+  const v0 = [target[3]!, target[4]!, target[5]!];
+  let lag = 0;
+  for (let k = 0; k < 6; k++) {
+    keplerState(target, v0, mu, day + lag, lagAt);
+    const [x, y, z, vx, vy, vz] = lagAt as unknown as number[];
+    // The orbit's normal h = r x v, and the signed angle from r to the point about it.
+    const hx = y! * vz! - z! * vy!,
+      hy = z! * vx! - x! * vz!,
+      hz = x! * vy! - y! * vx!;
+    const h = Math.hypot(hx, hy, hz);
+    const cx = y! * pz - z! * py,
+      cy = z! * px - x! * pz,
+      cz = x! * py - y! * px;
+    const angle = Math.atan2((cx * hx + cy * hy + cz * hz) / h, x! * px + y! * py + z! * pz);
+    // Angular speed h / r^2 (Kepler's second law).
+    const step = angle / (h / (x! * x! + y! * y! + z! * z!));
+    lag += step;
+    if (Math.abs(step) < 1e-3) break;
+  }
+  return lag;
+}

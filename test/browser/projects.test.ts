@@ -205,6 +205,11 @@ describe('projects', () => {
       return m.flight!.burns === 1 && m.plan.current ? m : null;
     }, null);
     expect(burnt.flight!.fuelUsed).toBeCloseTo(0.05, 9);
+    // The course before the burn is kept to show dim beside the new one (for 4 s of the clock, so
+    // not read here whether it shows: the count of its dots is set at the burn, none before one).
+    expect(
+      await g.page.evaluate(() => (window.game as unknown as { burnLook(): { ghostDots: number } }).burnLook().ghostDots),
+    ).toBeGreaterThan(10);
     expect(burnt.plan.hit ? burnt.plan.time : burnt.plan.distance).not.toBe(burnt.plan.hit ? launched.time : launched.distance);
     await g.waitFor(() => document.querySelector('[data-hud="plan"]')?.textContent?.endsWith('fuel 0.95 km/s'), null);
     expect(g.errors).toEqual([]);
@@ -322,11 +327,15 @@ describe('projects', () => {
     const g = await h.openGame('solar-system', { viewport: { width: 1280, height: 800 }, query: { rate: 0 } });
     type Solar = { mission(): { number: number; phase: string }; startMission(index: number): void };
     const number = () => g.page.evaluate(() => (window.game as unknown as Solar).mission().number);
-    // A first visit (no storage) starts at mission 1, its line reading the launch's path, not judging it (no ✓ or ✗).
+    const startSpeed = await g.page.evaluate(
+      () => (window.game as unknown as { mission(): { aim: { speed: number } } }).mission().aim.speed,
+    );
+    // A first visit (no storage) starts at mission 1, its line reading the launch's path (without the
+    // ring at arrival) and its verdict: ✗, short of Mars's orbit.
     expect(await number()).toBe(1);
     await g.waitFor(
       () =>
-        / → goes out only to \d\.\d\d AU from the Sun, short of Mars’s orbit$/.test(
+        / → ✗ goes out only to \d\.\d\d AU from the Sun, short of Mars’s orbit$/.test(
           document.querySelector('[data-hud="plan"]')?.textContent ?? '',
         ),
       null,
@@ -356,6 +365,10 @@ describe('projects', () => {
       const day = seen.line.match(/is at Mars’s orbit on day (\d+) (going out|coming in)/)?.[1];
       if (!day) continue;
       crossings++;
+      // And the line's verdict on that meeting (a stranger read "Will Mars be there?" with no answer).
+      expect(seen.line).toMatch(
+        /\. (✓ Mars will be there · ★|✗ Mars (gets there \d+ days? later|passed there \d+ days? before)|✗ misses Mars: closest)/,
+      );
       expect(seen.tags, seen.line).toEqual([`Mars on day ${day}`, `probe on day ${day}`]);
       // Every crossing named with its way; in order of day they alternate, out first: a path from
       // the Earth, inside Mars's orbit, crosses it going out before it can come back in.
@@ -392,6 +405,14 @@ describe('projects', () => {
       return { speed, line: document.querySelector('[data-hud="plan"]')?.textContent ?? '' };
     });
     expect(pressed.line).toBe(`Launch ${(pressed.speed + 0.1).toFixed(1)} km/s along the Earth’s path → …`);
+    // R restarts the mission: its first day (the wait undone) and its starting launch speed (it kept
+    // the last speed, where a player expected a reset; T keeps it).
+    await g.press('r');
+    const restarted = await g.waitFor(() => {
+      const game = window.game as unknown as Aiming & { world: { time: number } };
+      return game.world.time === 0 ? game.mission().aim.speed : null;
+    }, null);
+    expect(restarted).toBe(startSpeed);
     // Mission 4 started, then the page reloaded: mission 4 again (it went back to mission 1).
     await g.page.evaluate(() => (window.game as unknown as Solar).startMission(3));
     await g.page.reload();

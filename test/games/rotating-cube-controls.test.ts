@@ -4,7 +4,7 @@
  * it (on the cube too) while a drag from the cube flicks it.
  */
 import { describe, expect, it } from 'vitest';
-import { cubeControls, RollQueue, TAP_SLOP, touchPress } from '../../games/rotating-cube/controls';
+import { cubeControls, ROLL_QUEUE_MAX, RollQueue, TAP_SLOP, touchPress } from '../../games/rotating-cube/controls';
 
 const line = (mode: 'room' | 'cube' | 'flip', touch: boolean, keys: string) =>
   cubeControls(mode, touch).find((c) => c.keys === keys)!.action;
@@ -70,17 +70,54 @@ describe('rotating cube roll queue', () => {
       if (next) rolls.push(next);
     }
     expect(rolls).toEqual(['s', 's']);
-    expect(q.pending).toBe('');
+    expect(q.pending).toEqual([]);
   });
-  it('one pending move: a later tap while busy replaces it; a tap while free acts at once and drops it; clear forgets it', () => {
+  it('up to ROLL_QUEUE_MAX presses wait, in order; one more replaces the last; a press while free with some waiting goes after them; clear forgets them', () => {
     const q = new RollQueue();
-    expect([q.press('w', true), q.press('a', true), q.pending]).toEqual([false, false, 'a']);
+    expect(ROLL_QUEUE_MAX).toBe(2);
+    expect([q.press('w', true), q.press('a', true), [...q.pending]]).toEqual([false, false, ['w', 'a']]);
+    expect([q.press('d', true), [...q.pending]]).toEqual([false, ['w', 'd']]);
     expect(q.take(true)).toBe('');
-    expect([q.take(false), q.take(false)]).toEqual(['a', '']);
-    q.press('d', true);
-    expect([q.press('s', false), q.pending]).toEqual([true, '']);
+    expect(q.take(false)).toBe('w');
+    // Free with one still waiting: the new press waits behind it.
+    expect([q.press('s', false), [...q.pending]]).toEqual([false, ['d', 's']]);
+    expect([q.take(false), q.take(false), q.take(false)]).toEqual(['d', 's', '']);
+    expect(q.press('s', false)).toBe(true);
     q.press('d', true);
     q.clear();
     expect(q.take(false)).toBe('');
+  });
+
+  it('quick presses during a roll all roll, in order; a held key rolls again each time the cube rests, and stops when let go', () => {
+    // The page's frames as queueRolls reads them (main.ts): a roll keeps the cube busy ROLL frames
+    // after the press that starts it (a roll in the room takes about 40 frames of 1/60 s to rest).
+    // A stranger's quick run, D A D with 8 frames between presses, all came while one roll turned:
+    // with a queue of one the A was replaced and the cube went D D.
+    const ROLL = 40;
+    const play = (presses: Record<number, string>, heldFrames: Record<string, [number, number]>, frames: number) => {
+      const q = new RollQueue();
+      const rolls: string[] = [];
+      let busyUntil = -1;
+      for (let f = 0; f < frames; f++) {
+        const busy = f < busyUntil;
+        const held = Object.keys(heldFrames).filter((k) => f >= heldFrames[k]![0] && f < heldFrames[k]![1]);
+        const key = presses[f];
+        let next = key && q.press(key, busy) ? key : '';
+        if (!key || !next) next ||= q.take(busy, held);
+        if (next) {
+          rolls.push(`${next}@${f}`);
+          busyUntil = f + ROLL;
+        }
+      }
+      return rolls;
+    };
+    expect(play({ 0: 'd', 8: 'a', 16: 'd' }, {}, 200)).toEqual(['d@0', 'a@40', 'd@80']);
+    // Held 100 frames (1.7 s): a roll at once and one each time it rests while the key is down.
+    expect(play({ 0: 'd' }, { d: [0, 100] }, 300)).toEqual(['d@0', 'd@40', 'd@80']);
+    // Held just past one roll's rest: two rolls; a tap: one.
+    expect(play({ 0: 'w' }, { w: [0, 41] }, 300)).toEqual(['w@0', 'w@40']);
+    expect(play({ 0: 'w' }, { w: [0, 3] }, 300)).toEqual(['w@0']);
+    // A press waiting goes before the held key's repeat.
+    expect(play({ 0: 'd', 10: 'w' }, { d: [0, 100] }, 300)).toEqual(['d@0', 'w@40', 'd@80']);
   });
 });

@@ -12,7 +12,7 @@ import { tutorialAim } from '../../games/solar-system/advice';
 import { forecastLaunch } from '../../games/solar-system/forecast';
 import { keplerState } from '../../games/solar-system/kepler';
 import { heliocentricState, MISSIONS, missionScore, SCORE_FIRST_TRY } from '../../games/solar-system/missions';
-import { meetingPoint, orbitCrossings, orbitRadiusToward, orbitReach, pathDay } from '../../games/solar-system/orbit-crossing';
+import { meetingPoint, orbitCrossings, orbitRadiusToward, orbitReach, pathDay, targetLag } from '../../games/solar-system/orbit-crossing';
 
 describe('orbitRadiusToward', () => {
   test('a circle is its radius every way; an ellipse (e = 0.6) is a(1 - e) at perihelion, a(1 + e) at aphelion, p at 90 degrees', () => {
@@ -93,6 +93,38 @@ describe('orbitCrossings and meetingPoint', () => {
     const j = meetingPoint(miss, mars, mu);
     expect(j).toBeGreaterThan(0);
     expect(gap(miss, j)).toBeGreaterThan(m.zone - 0.01);
+  });
+
+  test('targetLag: the days until Mars reaches the meeting point, the verdict the line gives at every speed (a stranger read "Will Mars be there?" and no answer)', () => {
+    // Brute force: the day, within half of Mars's 687-day period of the probe's, when Mars's Kepler
+    // place comes nearest the point (a scan a tenth of a day apart). targetLag agrees within 0.2 day.
+    const scan = (f: ReturnType<typeof forecastLaunch>, i: number): number => {
+      const day = pathDay(f, i);
+      let best = 0,
+        nearest = Infinity;
+      for (let d = -343; d <= 343; d += 0.1) {
+        const at = keplerState(mars, mars.subarray(3), mu, day + d);
+        const g = Math.hypot(f.path[3 * i]! - at[0]!, f.path[3 * i + 1]! - at[1]!, f.path[3 * i + 2]! - at[2]!);
+        if (g < nearest) [best, nearest] = [d, g];
+      }
+      return best;
+    };
+    const lags: number[] = [];
+    // The lesson's arriving speed, and from it slower and faster by up to 1.5 km/s (launches that miss).
+    for (const extra of [0, -0.4, 0.4, 1, 1.5]) {
+      const f = forecastLaunch(world, handles, m, { angle: lesson.hit.angle, speed: lesson.hit.speed + extra }, 1 / 24);
+      const i = meetingPoint(f, mars, mu);
+      if (i < 0) continue;
+      const lag = targetLag(f, i, mars, mu);
+      expect(Math.abs(lag - scan(f, i)), `+${extra} km/s`).toBeLessThan(0.2);
+      // An arrival: Mars is there within the days its ring takes to pass (0.14 AU at 24 km/s, 0.0139 AU a day: 10 days).
+      if (f.outcome === 'arrived') expect(Math.abs(lag), `+${extra} km/s`).toBeLessThan(m.zone / 0.0139 + 1);
+      lags.push(lag);
+    }
+    // A miss is told by a lag of days, both ways: some launches find Mars still to come, some after it passed.
+    expect(lags.length).toBeGreaterThanOrEqual(4);
+    expect(lags.some((l) => l > 5) && lags.some((l) => l < -5)).toBe(true);
+    expect(() => targetLag(forecastLaunch(world, handles, m, lesson.start, 1 / 24), 10_000, mars, mu)).toThrow(/pathDay: index/);
   });
 });
 
