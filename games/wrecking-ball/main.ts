@@ -2821,6 +2821,17 @@ const HINT_SHOWN = 3;
 /** World time until which the open-ground hint shows. */
 let hintUntil = -1;
 const tapWord = touch ? 'Tap' : 'Click';
+/**
+ * Whether the intro is drawn compact within the strip over the scene's top the framing keeps clear
+ * of the site (FRAME_TOP: 11 % of the height, 74 px of a 390 x 844 phone's scene): a phone held
+ * upright. Its full two sentences in the hint's large type took four lines (100 px) and covered
+ * the mast's top and the jib.
+ */
+function introRoom(): boolean {
+  return touch && SMALL_SCREEN && PORTRAIT;
+}
+/** The intro's first words (a phone's whole intro after INTRO_FULL s). */
+const INTRO_LEAD = 'Drag back from a block and let go';
 /** Seconds of a level's world time the full intro shows on a phone before it shrinks to one line (see hintText). */
 const INTRO_FULL = 6;
 /** The pull being aimed in words: its power and the ball's speed at the piece it gives (./scene swingSpeed). */
@@ -2869,9 +2880,12 @@ function hintText(): string {
   // With how three stars are earned: the clear target in par swings, which no single structure
   // holds (level 1, layout 1: 16 down, its structures 5, 10 and 12 pieces), so each swing has to topple one of the big ones.
   if (c.released === 0 && c.moves.length === 0 && aimed === 0) {
-    // On a phone the full intro covers the view's top quarter: after INTRO_FULL s it shrinks to one line.
-    if (PORTRAIT && shell.world.time > INTRO_FULL) return 'Drag back from a block and let go';
-    return `Drag back from a block and let go: the ball swings into it along the arrow\n★★★: ${clearTarget(handles.pieces, handles.level)} down in ${swingPar(handles.level)} swings: ${levelTip(handles.level)}`;
+    // On a phone the intro is three compact lines over the sky the framing leaves (see introRoom):
+    // after INTRO_FULL s it shrinks to one line.
+    if (PORTRAIT && shell.world.time > INTRO_FULL) return INTRO_LEAD;
+    const stars = `★★★: ${clearTarget(handles.pieces, handles.level)} down in ${swingPar(handles.level)} swings: ${levelTip(handles.level)}`;
+    if (introRoom()) return `${INTRO_LEAD}\n${stars}`;
+    return `${INTRO_LEAD}: the ball swings into it along the arrow\n${stars}`;
   }
   return '';
 }
@@ -3037,9 +3051,12 @@ function frame(): void {
             swing.result && shell.world.time - swing.resultAt < RESULT_SHOWN ? ` · ${swing.result}` : ''
           }${left <= 0 && handles.controls.moves.length === 0 ? ` · out of swings: ${touch ? 'tap ↻' : 'press R'} to retry` : ''}${swayHint()}`;
     showNext(cleared, `Level ${handles.level + 1} ▶`);
-    showHint(hintText(), cleared);
-    // After the first swing a phone's hint is compact, so it leaves the top of the scene in sight.
-    hint.classList.toggle('compact', touch && SMALL_SCREEN && swingsUsed() > 0 && !cleared);
+    const text = hintText();
+    showHint(text, cleared);
+    // On a phone the intro, and every hint after the first swing, is compact, so it leaves the top
+    // of the scene in sight (the intro within the strip the framing keeps clear: introRoom).
+    const intro = text.startsWith(INTRO_LEAD);
+    hint.classList.toggle('compact', touch && SMALL_SCREEN && (swingsUsed() > 0 || (introRoom() && intro)) && !cleared);
     drawPlan();
     readout.textContent = params.debug
       ? `score ${banked + levelScore} · step ${stepMs.toFixed(1)} ms (worst ${worstMs.toFixed(1)}) · ${handles.pieces.length} pieces`
