@@ -887,8 +887,12 @@ jibMaterial.alphaMap = jibMaterial.map;
 const jib = new Mesh<BoxGeometry, Material>(new BoxGeometry(JIB_LENGTH, 0.55, 0.55), jibMaterial);
 jib.castShadow = true;
 app.scene.add(jib);
-/** The jib's opacity while it is drawn over a standing piece (`jibOverSite`): the pieces show through. */
-const JIB_FADED = 0.35;
+/**
+ * The jib's opacity while it is drawn over a standing piece (`jibOverSite`): the pieces show through
+ * its open panels and, dimmed, through its bars. At 0.35 the faint lattice read as a ghost of the
+ * crane's frame beside its own shadow on the ground; at 0.65 it reads as the jib.
+ */
+const JIB_FADED = 0.65;
 /** How near (in the screen's half heights) a standing piece's centre is drawn to the jib's line to count as under it. */
 const JIB_COVER = 0.1;
 const jibPoint = new Vector3();

@@ -183,7 +183,7 @@ describe('wrecking ball: the aim arrow and the jib keep out of the way', () => {
     expect(clear.length).toBeGreaterThan(0);
     expect(over.every((s) => !s.solid)).toBe(true);
     expect(clear.every((s) => s.solid)).toBe(true);
-    // Faded, the jib still shows: its bars' alpha times its opacity (0.35) passes its alpha test
+    // Faded, the jib still shows: its bars' alpha times its opacity (0.65) passes its alpha test
     // (at the solid jib's test, 0.5, every fragment was cut: a phone saw the cable hang from empty sky).
     expect(seen.every((s) => s.shows)).toBe(true);
   });
