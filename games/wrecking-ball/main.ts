@@ -887,8 +887,12 @@ jibMaterial.alphaMap = jibMaterial.map;
 const jib = new Mesh<BoxGeometry, Material>(new BoxGeometry(JIB_LENGTH, 0.55, 0.55), jibMaterial);
 jib.castShadow = true;
 app.scene.add(jib);
-/** The jib's opacity while it is drawn over a standing piece (`jibOverSite`): the pieces show through. */
-const JIB_FADED = 0.35;
+/**
+ * The jib's opacity while it is drawn over a standing piece (`jibOverSite`): the pieces show through
+ * its open panels and, dimmed, through its bars. At 0.35 the faint lattice read as a ghost of the
+ * crane's frame beside its own shadow on the ground; at 0.65 it reads as the jib.
+ */
+const JIB_FADED = 0.65;
 /** How near (in the screen's half heights) a standing piece's centre is drawn to the jib's line to count as under it. */
 const JIB_COVER = 0.1;
 const jibPoint = new Vector3();
@@ -2821,6 +2825,17 @@ const HINT_SHOWN = 3;
 /** World time until which the open-ground hint shows. */
 let hintUntil = -1;
 const tapWord = touch ? 'Tap' : 'Click';
+/**
+ * Whether the intro is drawn compact within the strip over the scene's top the framing keeps clear
+ * of the site (FRAME_TOP: 11 % of the height, 74 px of a 390 x 844 phone's scene): a phone held
+ * upright. Its full two sentences in the hint's large type took four lines (100 px) and covered
+ * the mast's top and the jib.
+ */
+function introRoom(): boolean {
+  return touch && SMALL_SCREEN && PORTRAIT;
+}
+/** The intro's first words (a phone's whole intro after INTRO_FULL s). */
+const INTRO_LEAD = 'Drag back from a block and let go';
 /** Seconds of a level's world time the full intro shows on a phone before it shrinks to one line (see hintText). */
 const INTRO_FULL = 6;
 /** The pull being aimed in words: its power and the ball's speed at the piece it gives (./scene swingSpeed). */
@@ -2869,9 +2884,12 @@ function hintText(): string {
   // With how three stars are earned: the clear target in par swings, which no single structure
   // holds (level 1, layout 1: 16 down, its structures 5, 10 and 12 pieces), so each swing has to topple one of the big ones.
   if (c.released === 0 && c.moves.length === 0 && aimed === 0) {
-    // On a phone the full intro covers the view's top quarter: after INTRO_FULL s it shrinks to one line.
-    if (PORTRAIT && shell.world.time > INTRO_FULL) return 'Drag back from a block and let go';
-    return `Drag back from a block and let go: the ball swings into it along the arrow\n★★★: ${clearTarget(handles.pieces, handles.level)} down in ${swingPar(handles.level)} swings: ${levelTip(handles.level)}`;
+    // On a phone the intro is three compact lines over the sky the framing leaves (see introRoom):
+    // after INTRO_FULL s it shrinks to one line.
+    if (PORTRAIT && shell.world.time > INTRO_FULL) return INTRO_LEAD;
+    const stars = `★★★: ${clearTarget(handles.pieces, handles.level)} down in ${swingPar(handles.level)} swings: ${levelTip(handles.level)}`;
+    if (introRoom()) return `${INTRO_LEAD}\n${stars}`;
+    return `${INTRO_LEAD}: the ball swings into it along the arrow\n${stars}`;
   }
   return '';
 }
@@ -3037,9 +3055,12 @@ function frame(): void {
             swing.result && shell.world.time - swing.resultAt < RESULT_SHOWN ? ` · ${swing.result}` : ''
           }${left <= 0 && handles.controls.moves.length === 0 ? ` · out of swings: ${touch ? 'tap ↻' : 'press R'} to retry` : ''}${swayHint()}`;
     showNext(cleared, `Level ${handles.level + 1} ▶`);
-    showHint(hintText(), cleared);
-    // After the first swing a phone's hint is compact, so it leaves the top of the scene in sight.
-    hint.classList.toggle('compact', touch && SMALL_SCREEN && swingsUsed() > 0 && !cleared);
+    const text = hintText();
+    showHint(text, cleared);
+    // On a phone the intro, and every hint after the first swing, is compact, so it leaves the top
+    // of the scene in sight (the intro within the strip the framing keeps clear: introRoom).
+    const intro = text.startsWith(INTRO_LEAD);
+    hint.classList.toggle('compact', touch && SMALL_SCREEN && (swingsUsed() > 0 || (introRoom() && intro)) && !cleared);
     drawPlan();
     readout.textContent = params.debug
       ? `score ${banked + levelScore} · step ${stepMs.toFixed(1)} ms (worst ${worstMs.toFixed(1)}) · ${handles.pieces.length} pieces`

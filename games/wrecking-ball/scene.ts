@@ -1209,7 +1209,7 @@ export interface PullBack {
   dz: number;
   /** Whether the player let go: the line slips as soon as the hook and the ball are in place (`pullReady`). */
   letGo: boolean;
-  /** Seconds since the player let go with the hook in place (see PULL_WAIT). */
+  /** Seconds the ball has been held up (nearly still) since the player let go with the hook in place (see PULL_WAIT). */
   waited: number;
   /** Whether it re-aims a swing already let go whose run has not begun (the same swing, aimed anew). */
   again: boolean;
@@ -1223,24 +1223,31 @@ export interface PullBack {
  * swing off its arc.
  */
 const PULL_HERTZ = 2;
-/** Largest acceleration, m/s^2, the tagline gives the ball across the ground (a winch's pull on 5 t). */
-const PULL_ACCEL = 14;
+/**
+ * Largest acceleration, m/s^2, the tagline gives the ball across the ground (a winch's pull on 5 t):
+ * enough to draw the ball the 3 m back from under the hook in about half a second.
+ */
+const PULL_ACCEL = 20;
 /**
  * Top speed, m/s, and acceleration, m/s^2, of the hook across the ground while the line holds the
  * ball: what the line can carry the 5 t ball along at without it flying out on its chain (at the
- * planned swings' 2.5 times the crane's rates the ball swung out level with the hook).
+ * planned swings' 2.5 times the crane's rates the ball swung out level with the hook) or touching
+ * a piece on its way (wrecking-ball-pull.test.ts counts none).
  */
-const PULL_HOOK_SPEED = 5;
-const PULL_HOOK_ACCEL = 5;
+const PULL_HOOK_SPEED = 6;
+const PULL_HOOK_ACCEL = 8;
 /**
- * Seconds after the player let go, with the hook in place, that the line slips even if the ball is
- * not yet where it is drawn (held up against a piece): the swing goes from where the ball is.
+ * Seconds after the player let go, with the hook in place and the ball held up (nearly still short
+ * of where it is drawn: against a piece), that the line slips: the swing goes from where the ball is.
  */
 const PULL_WAIT = 0.3;
 /** Seconds after the player let go, with the hook in place but held up over a piece beside the drawn-back ball, that the line slips from there. */
 const PULL_STUCK = 2;
-/** Distance across the ground, m, from the hook's goal within which it lets the ball down from CRUISE_HEIGHT (at HOIST_SPEED, about as long as the rest of its run). */
-const PULL_LOWER = 2;
+/**
+ * Distance across the ground, m, from the hook's goal within which it lets the ball down from
+ * CRUISE_HEIGHT and the line starts drawing it back: both then overlap the rest of the hook's run.
+ */
+const PULL_LOWER = 3.5;
 /**
  * Nearest, m, a held ball's centre or its chain comes to the mast's axis: the mast's corner (0.57 m)
  * and the ball's radius with room, so the ball is never drawn into the mast nor the chain across it.
@@ -1351,8 +1358,12 @@ function pullStep(world: PhysicsWorld, h: WreckingBallHandles, pull: PullBack, d
   // drawn-back ball: the swing then goes from there).
   const inPlace = Math.hypot(hx - gx, hz - gz) < 0.05 && Math.abs(c.height - want) < 0.1;
   const atStrike = Math.abs(c.height - pull.height) < 0.1;
-  // The wait counts once the line draws the ball the way the swing goes (see turnDraw).
-  if (pull.letGo && inPlace && pull.dx * pull.ux + pull.dz * pull.uz > DRAWN_COS) pull.waited += dt;
+  // The wait counts once the line draws the ball the way the swing goes (see turnDraw), and only
+  // while the ball is held up (nearly still past the hook): one still on its way to where it is
+  // drawn would swing from short of there, not along the swing drawn for the player.
+  const V = world.components.Velocity;
+  const held = Math.hypot(V.x[b]! - V.x[h.trolley]!, V.z[b]! - V.z[h.trolley]!) < READY_STILL;
+  if (pull.letGo && inPlace && held && pull.dx * pull.ux + pull.dz * pull.uz > DRAWN_COS) pull.waited += dt;
   if (pull.letGo && inPlace && ((atStrike && (pullReady(world, h, pull, want) || pull.waited > PULL_WAIT)) || pull.waited > PULL_STUCK)) {
     h.controls.pull = null;
     if (pull.offset === 0) return;
@@ -1394,8 +1405,7 @@ function pullStep(world: PhysicsWorld, h: WreckingBallHandles, pull: PullBack, d
   c.angle = wrap(c.angle + h.drive.slew * dt);
   c.radius = Math.min(RADIUS_RANGE[1], Math.max(RADIUS_RANGE[0], c.radius + h.drive.trolley * dt));
   c.height = Math.min(HOOK_RANGE[1], Math.max(HOOK_RANGE[0], c.height + lift));
-  const V = world.components.Velocity,
-    F = world.components.Force,
+  const F = world.components.Force,
     M = world.components.Mass;
   const [nx, , nz] = hookPosition(c);
   // On its way the line holds the ball under the hook (drawn back, it swung wide and through what it
@@ -1432,16 +1442,16 @@ function pullStep(world: PhysicsWorld, h: WreckingBallHandles, pull: PullBack, d
 }
 
 /** Fastest, m/s, the tagline lets the ball run across the ground past the hook (see pullStep). */
-const HELD_SPEED = 4;
+const HELD_SPEED = 5;
 /** Largest deceleration, m/s^2, with which the tagline brakes a ball running faster than HELD_SPEED. */
 const HELD_BRAKE = 30;
 
 /**
  * Fastest the way the line draws the ball turns about the hook, rad/s (see PullBack.dx): the drawn
- * ball then runs round at most 4 m/s at the line's full length (HELD_SPEED), within what the line's pull
+ * ball then runs round at most 5 m/s at the line's full length (HELD_SPEED), within what the line's pull
  * (PULL_ACCEL) holds on that circle.
  */
-const DRAW_TURN = 1.2;
+const DRAW_TURN = 1.5;
 /** The same once the player has let go (the swing is on its way; nothing is being aimed past the structure). */
 const DRAW_TURN_LET_GO = 2.4;
 /** Cosine of the angle within which the line draws the ball the swing's way (about 8 degrees): the line may slip. */
@@ -1468,8 +1478,8 @@ function turnDraw(pull: PullBack, far: boolean, gx: number, gz: number, dt: numb
   pull.dz = Math.sin(a);
 }
 
-/** Rate, m/s, the hook is raised and lowered while the tagline holds the ball (twice HOIST_SPEED: it lifts the ball over the pieces on its way without holding the run up long). */
-const PULL_HOIST_SPEED = 2 * HOIST_SPEED;
+/** Rate, m/s, the hook is raised and lowered while the tagline holds the ball (three times HOIST_SPEED: it lifts the ball over the pieces on its way without holding the run up long). */
+const PULL_HOIST_SPEED = 3 * HOIST_SPEED;
 /** Room, m, the carried ball's underside keeps over the top of a piece it passes over. */
 const CARRY_CLEAR = 0.3;
 /** Room, m, across the ground either side of the carried ball's way (it lags and sways on its chain while the hook runs). */
@@ -1806,7 +1816,12 @@ function swingSetup(world: PhysicsWorld, h: WreckingBallHandles, piece: number, 
   let offset = HANG * Math.sqrt(1 - cos * cos);
   // Shortened till the segment from the hook to the ball keeps MAST_CLEAR from the mast's axis.
   while (offset > 0.3 && segmentToAxis(x, z, x - offset * ux, z - offset * uz) < MAST_CLEAR) offset -= 0.1;
-  return { goal: { x, z, height, ux, uz, offset }, structure, tx, tz };
+  // Drawn back beside or over a piece, the ball hangs clear of it (see pullStep): the hook stays as
+  // high as that takes, and the swing goes from there (it may pass over what it was aimed at).
+  const sx = x - offset * ux,
+    sz = z - offset * uz;
+  const clear = Math.max(height, carryHeight(world, h.pieces, sx, sz, sx, sz, CARRY_NEAR_SIDE));
+  return { goal: { x, z, height: clear, ux, uz, offset }, structure, tx, tz };
 }
 
 /** How many pieces have fallen. */

@@ -8,7 +8,7 @@ import { Harness, START_TIMEOUT_MS } from './harness';
 
 interface WB {
   world: { components: { Position: { x: Float64Array; y: Float64Array; z: Float64Array } } };
-  handles(): { pieces: { body: number; x0: number; z0: number }[]; crane: { angle: number } };
+  handles(): { pieces: { body: number; x0: number; z0: number }[]; crane: { angle: number }; trolley: number };
   pressAt(x: number, y: number): string;
   releaseAt(x: number, y: number): string;
   aimExtent(): { x: number; y: number } | null;
@@ -46,6 +46,34 @@ describe('wrecking ball: the aim arrow and the jib keep out of the way', () => {
     await g.page.evaluate(() => {
       (window.game as unknown as WB).paused = true;
     });
+    // The level's intro over the scene's top, and the site as framed: the intro's bottom and the
+    // highest of the pieces' tops, the mast's top and the hook as drawn, page px below the canvas's top.
+    const intro = await g.page.evaluate(() => {
+      const game = window.game as unknown as WB;
+      const P = game.world.components.Position;
+      const canvas = document.querySelector('canvas')!.getBoundingClientRect();
+      const hint = document.querySelector<HTMLElement>('[data-hud="tap-hint"]')!;
+      const y = (x: number, h: number, z: number): number =>
+        ((1 - game.app.camera.position.clone().set(x, h, z).project(game.app.camera).y) / 2) * canvas.height;
+      const tops = game.handles().pieces.map((p) => y(P.x[p.body]!, P.y[p.body]! + 0.35, P.z[p.body]!));
+      const hook = game.handles().trolley;
+      tops.push(y(0, 11.9, 0), y(P.x[hook]!, P.y[hook]!, P.z[hook]!));
+      return {
+        text: hint.innerText,
+        bottom: hint.getBoundingClientRect().bottom - canvas.top,
+        site: Math.min(...tops),
+        height: canvas.height,
+      };
+    });
+    console.log(
+      `intro ${JSON.stringify(intro.text)}: its bottom ${intro.bottom.toFixed(0)} px down the scene, the site's top ${intro.site.toFixed(0)} px`,
+    );
+    // Before: the intro's two sentences took four lines of the hint's large type, 100 px of the
+    // scene's 671, past the strip its framing keeps clear of the site (the top 11 %, FRAME_TOP;
+    // over the mast's top and the jib). Compact, within that strip (measured 53 px), and above
+    // everything framed (the site's top at 151 px).
+    expect(intro.bottom).toBeLessThanOrEqual(0.11 * intro.height);
+    expect(intro.bottom).toBeLessThan(intro.site);
     /** Where each piece is drawn (normalised device coordinates), for those inside the screen. */
     const spots = await g.page.evaluate(() => {
       const game = window.game as unknown as WB;
@@ -155,7 +183,7 @@ describe('wrecking ball: the aim arrow and the jib keep out of the way', () => {
     expect(clear.length).toBeGreaterThan(0);
     expect(over.every((s) => !s.solid)).toBe(true);
     expect(clear.every((s) => s.solid)).toBe(true);
-    // Faded, the jib still shows: its bars' alpha times its opacity (0.35) passes its alpha test
+    // Faded, the jib still shows: its bars' alpha times its opacity (0.65) passes its alpha test
     // (at the solid jib's test, 0.5, every fragment was cut: a phone saw the cable hang from empty sky).
     expect(seen.every((s) => s.shows)).toBe(true);
   });

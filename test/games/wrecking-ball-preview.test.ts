@@ -121,16 +121,18 @@ describe('wrecking-ball: the swing preview', () => {
     expect(out.length).toBeGreaterThanOrEqual(18);
     expect(agree).toBeGreaterThanOrEqual(Math.ceil((5 / 6) * out.length));
     expect(median).toBeLessThan(1.1);
-    // Read, it helps: of the drags at structures the ball can be aimed at past the others (all but
-    // level 2's structure 3, behind structure 2, which the ball, let go over it, meets first whichever
-    // way the preview turns it: there a blind drag's outcome is chance, and a change of the solver's
-    // rounding moved one such drag from one to the other), 23 of 24 first swings touch the aimed
-    // structure first when the drags ignore the preview and 24 of 24 when those it shows going
-    // elsewhere are turned till it shows the aimed one. Bound: more than the blind drags
+    // Read, it helps, and it is honest where it was turned: a player who turns each drag the preview
+    // shows going elsewhere until it shows the aimed structure sees the ball touch that structure
+    // first in all 27 (level 2's structure 3, the end of the wall beside structure 2, included: the
+    // line slips only once the ball is drawn back where the preview starts it, or held up there;
+    // before, it slipped 0.3 s after the hook was in place with the ball still 2 m and more short of
+    // there, and those three turned drags touched structure 2 first, or nothing). The blind drags
+    // touch the aimed structure first in 25 of 27. Bounds: every turned drag touches what its preview
+    // showed, and the turned drags hit the aimed structure more often than the blind ones
     // (deterministic steps: the same counts every run).
-    const aimable = (o: Outcome) => !o.label.startsWith('L2 s3 ');
-    const hits = (list: Outcome[]) => list.filter((o) => aimable(o) && o.touched === o.aimed).length;
-    expect(hits(followed)).toBeGreaterThan(hits(out));
-    expect(onTargetFollowed).toBeGreaterThanOrEqual(onTarget - 1);
+    const turned = followed.filter((o, i) => o !== out[i]);
+    expect(turned.length).toBeGreaterThan(0);
+    expect(turned.filter((o) => o.predicted !== o.touched).map((o) => o.label)).toEqual([]);
+    expect(onTargetFollowed).toBeGreaterThan(onTarget);
   });
 });

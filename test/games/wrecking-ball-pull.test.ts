@@ -11,12 +11,14 @@ import { contactEvents, createPhysicsWorld, step } from '@bitphysics/physics';
 import { describe, expect, it } from 'vitest';
 import {
   buildWreckingBall,
+  HANG,
   hookPosition,
   letGoPull,
   pullBack,
   type SwingRequest,
   scorePieces,
   segmentToAxis,
+  swingGoal,
   swingSpeed,
   wreckingBallWorldOptions,
 } from '../../games/wrecking-ball/scene';
@@ -145,21 +147,52 @@ describe('wrecking-ball: drag to hit', () => {
     const early = all.reduce((a, r) => a + r.early, 0);
     console.log(`ball-piece contacts while held ${early}, after let-go before the line slipped ${all.reduce((a, r) => a + r.slipping, 0)}`);
     console.log(`nearest the held chain came to the mast's axis: ${nearMast.toFixed(2)} m`);
-    // Measured (36 gestures, all 1 s holds): median 2.68 s, p90 5.40 s, 33 pieces aimed at fell
-    // (2.30 s, 5.22 s and 29 before the line braked the held ball and turned it round the hook:
-    // the swing waits for the ball to be drawn its way). The same gestures before the ball was drawn
-    // back while the drag was held (the crane planning its swing only once let go): median 2.97 s,
-    // p90 6.28 s; these bounds fail there. Bounds: as set on the earlier 2.30 s and 5.22 s (0.4 s
-    // and 0.6 s over them).
+    // Measured (36 gestures, all 1 s holds): median 2.25 s, p90 4.63 s, 32 pieces aimed at fell.
+    // Before the hook carried the ball faster and the line drew it back over the run's last 3.5 m
+    // (not 2 m), slipping only once the ball was there or held up: median 2.68 s, p90 5.40 s, 33
+    // fell (the line slipped 0.3 s after the hook was in place with the ball still on its way, and
+    // such a swing went off its arc: 7.8 s to hit at level 1's tower 40 degrees off). Bounds: 0.25 s
+    // and 0.37 s over the measured figures (below those before).
     expect(all.length).toBeGreaterThan(30);
-    expect(quantile(times, 0.5)).toBeLessThan(2.7);
-    expect(quantile(times, 0.9)).toBeLessThan(5.8);
+    expect(quantile(times, 0.5)).toBeLessThan(2.5);
+    expect(quantile(times, 0.9)).toBeLessThan(5);
     expect(all.filter((r) => r.fell).length).toBeGreaterThanOrEqual(Math.ceil(0.75 * all.length));
     // The chain's line from the hook to the held ball never crosses the mast (its corner 0.57 m
     // from the axis, a link's radius more).
     expect(nearMast).toBeGreaterThan(0.64);
     // Nothing is hit while the drag is held: the ball is carried over every structure.
     expect(early).toBe(0);
+  });
+
+  it('carries the held ball to where its swing is drawn from within 2.55 s', () => {
+    // Level 1's wall, dragged straight from where the ball hangs at full power and held: seconds
+    // until the ball's centre is within 0.4 m (the page's ring turns green there, READY_SHOWN) of
+    // where the preview starts the swing (./scene swingGoal). Measured 2.22 s; before the hook ran
+    // faster, the hoist let the ball down faster and the line drew it back over the run's last 3.5 m:
+    // 2.88 s (over level 1 and 2's 27 straight and 40-degree drags the median went 3.15 s -> 2.35 s).
+    // Bound: midway (deterministic steps: the same every run).
+    const carry = (structure: number): number => {
+      const world = createPhysicsWorld(wreckingBallWorldOptions());
+      const h = buildWreckingBall(world, { level: 1, openStart: true });
+      for (let k = 0; k < 30; k++) step(world);
+      const group = groups(h.pieces)[structure]!;
+      const piece = group.slice().sort((a, b) => a.y0 - b.y0)[Math.floor(group.length / 3)]!;
+      const P = world.components.Position;
+      const direction = Math.atan2(P.z[piece.body]! - P.z[h.ball]!, P.x[piece.body]! - P.x[h.ball]!);
+      const request: SwingRequest = { direction, speed: swingSpeed(1) };
+      for (let t = 0; t < 6; t += world.dt) {
+        pullBack(world, h, piece.body, request);
+        const g = swingGoal(world, h, piece.body, request);
+        step(world);
+        const sy = g.height - Math.sqrt(HANG * HANG - g.offset * g.offset);
+        const off = Math.hypot(P.x[h.ball]! - (g.x - g.offset * g.ux), P.y[h.ball]! - sy, P.z[h.ball]! - (g.z - g.offset * g.uz));
+        if (off < 0.4) return t + world.dt;
+      }
+      return Number.POSITIVE_INFINITY;
+    };
+    const time = carry(1);
+    console.log(`carried to the swing's start in ${time.toFixed(2)} s`);
+    expect(time).toBeLessThan(2.55);
   });
 
   it('hits nothing while a drag is held 4 s, nor till the line slips', { timeout: 900_000 }, () => {
