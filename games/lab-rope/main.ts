@@ -39,6 +39,7 @@ import {
   DEFAULTS,
   LEVELS,
   type Level,
+  pathReaches,
   predictFlight,
   RopeGame,
   type RopeScene,
@@ -99,6 +100,20 @@ function flightHintOn(): boolean {
 /** The flight hint's path as last drawn (x, y pairs, m; empty while hidden), and whether it ends in the basket. */
 const flight: number[] = [];
 let flightInBasket = false;
+/**
+ * Where the ball would fly if the last rope holding it were cut now (predictFlight from the ball as
+ * drawn; x, y pairs, m), while exactly one rope holds it and the level is on; empty otherwise.
+ * Worked out on every level whether its dots show or not: the cue to cut comes from it (see `lit`).
+ */
+const forecast: number[] = [];
+let forecastInBasket = false;
+/**
+ * The cue to cut, on every level: the stars not caught yet that a cut now would fly the ball
+ * through glow bright (view.ts), and the basket's rim does once a cut now would land in it. A swing
+ * passes the moment when all three stars and the basket light together, and a player sees it
+ * coming, instead of guessing a window a tenth of a second wide.
+ */
+const lit = [false, false, false];
 let scene: RopeScene;
 let game: RopeGame;
 let cuts = 0;
@@ -600,8 +615,23 @@ function draw(alpha: number, world: PhysicsWorld): void {
   const dt = Math.min(0.05, now - lastFrame);
   lastFrame = now;
   const cam = renderer.camera;
-  view.update(world, scene.level, scene.ropes, scene.ball, game.caught, cam, alpha, now, app.screen.width, app.screen.height, caughtAt);
+  forecastCut(world, alpha);
+  view.update(
+    world,
+    scene.level,
+    scene.ropes,
+    scene.ball,
+    game.caught,
+    cam,
+    alpha,
+    now,
+    app.screen.width,
+    app.screen.height,
+    caughtAt,
+    lit,
+  );
   overlay.clear();
+  drawBasketCue(now);
   // The swipe: the last 0.25 s of the stroke, fading.
   while (slash.length > 0 && now - slash[0]!.t > 0.25) slash.shift();
   for (let i = 1; i < slash.length; i++) {
@@ -617,7 +647,7 @@ function draw(alpha: number, world: PhysicsWorld): void {
       .lineTo(b.x, b.y)
       .stroke({ width: 2.5, color: 0xffffff, alpha: 0.9 * fade, cap: 'round' });
   }
-  drawFlight(world, alpha, now);
+  drawFlight(now);
   // The push: a band from the ball to the pointer.
   if (push && isAlive(world, push)) {
     const e = slotOf(scene.ball);
@@ -645,32 +675,58 @@ function draw(alpha: number, world: PhysicsWorld): void {
   showReadout(world);
 }
 
-/**
- * The flight hint (see flightHintOn): dots along predictFlight's path from the ball as drawn, fading
- * along the way, every 0.08 s of flight; a small ring where it ends.
- */
-function drawFlight(world: PhysicsWorld, alpha: number, now: number): void {
-  flight.length = 0;
-  flightInBasket = false;
-  hintCaption.visible = false;
-  if (!flightHintOn()) return;
-  const cam = renderer.camera;
+/** Works out `forecast` and `lit` for the frame at interpolation factor `alpha`. */
+function forecastCut(world: PhysicsWorld, alpha: number): void {
+  forecast.length = 0;
+  forecastInBasket = false;
+  lit.fill(false);
+  if (game.outcome !== 'playing' || game.holding() !== 1) return;
   const e = slotOf(scene.ball),
     P = world.components.Position,
     O = world.components.PreviousPosition,
     V = world.components.Velocity;
-  const c = BALL_DRAG / world.components.Mass.value[e]!;
-  flightInBasket = predictFlight(
+  forecastInBasket = predictFlight(
     scene.level,
     O.x[e]! + (P.x[e]! - O.x[e]!) * alpha,
     O.y[e]! + (P.y[e]! - O.y[e]!) * alpha,
     V.x[e]!,
     V.y[e]!,
     -world.gravity[1]!,
-    c,
-    flight,
+    BALL_DRAG / world.components.Mass.value[e]!,
+    forecast,
     0.04,
   );
+  scene.level.stars.forEach(([sx, sy], i) => {
+    lit[i] = !game.caught[i] && pathReaches(forecast, sx, sy);
+  });
+}
+
+/** The basket's rim lit (see `lit`): a soft green band along its walls' tops and its opening, pulsing at `now` s. */
+function drawBasketCue(now: number): void {
+  if (!forecastInBasket) return;
+  const cam = renderer.camera;
+  const [bx, by] = scene.level.basket,
+    half = scene.level.basketWidth / 2 + 0.05,
+    top = by + scene.level.basketDepth;
+  const a = 0.55 + 0.25 * Math.sin(8 * now);
+  overlay
+    .moveTo(cam.toScreenX(bx - half), cam.toScreenY(top))
+    .lineTo(cam.toScreenX(bx + half), cam.toScreenY(top))
+    .stroke({ width: Math.max(4, cam.toScreenLength(0.09)), color: 0x9ff0b8, alpha: a, cap: 'round' });
+}
+
+/**
+ * The flight hint (see flightHintOn): dots along the forecast path from the ball as drawn, fading
+ * along the way, every 0.08 s of flight; a small ring where it ends.
+ */
+function drawFlight(now: number): void {
+  flight.length = 0;
+  flightInBasket = false;
+  hintCaption.visible = false;
+  if (!flightHintOn() || forecast.length === 0) return;
+  const cam = renderer.camera;
+  flight.push(...forecast);
+  flightInBasket = forecastInBasket;
   const n = flight.length / 2;
   const dot = Math.max(2, cam.toScreenLength(0.045));
   for (let i = 2; i < n; i += 2) {

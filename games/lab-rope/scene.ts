@@ -383,6 +383,12 @@ export function predictFlight(
   return false;
 }
 
+/** Whether the path `path` (x, y pairs, m; predictFlight's) passes within STAR_REACH of the point (sx, sy). */
+export function pathReaches(path: readonly number[], sx: number, sy: number): boolean {
+  for (let i = 0; i + 1 < path.length; i += 2) if (Math.hypot(path[i]! - sx, path[i + 1]! - sy) < STAR_REACH) return true;
+  return false;
+}
+
 /** The lab's settings that shape its world. */
 export interface RopeSceneParams {
   /** Rope links a metre of rope, in [2, 40]. */

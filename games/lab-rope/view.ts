@@ -124,7 +124,8 @@ export class RopeView {
   /**
    * Draws `level` with its ropes and ball at interpolation factor `alpha`; `caught` says which stars
    * are gone, `time` (s) turns the stars. `W` x `H` is the canvas, px. `caughtAt` (s, on `time`'s
-   * clock; NaN while not caught) times each caught star's pop (STAR_POP_S).
+   * clock; NaN while not caught) times each caught star's pop (STAR_POP_S). A star `lit` (the cue
+   * to cut: a cut now would fly the ball through it) glows bright in a pulsing ring.
    */
   update(
     world: PhysicsWorld,
@@ -138,6 +139,7 @@ export class RopeView {
     W: number,
     H: number,
     caughtAt: readonly number[] = [],
+    lit: readonly boolean[] = [],
   ): void {
     const key = `${level.name}:${W}x${H}:${cam.toScreenX(0).toFixed(2)},${cam.toScreenY(0).toFixed(2)},${cam.toScreenLength(1).toFixed(4)}`;
     if (key !== this.roomKey) {
@@ -220,6 +222,12 @@ export class RopeView {
         R *= 1 + u;
         a0 += 4 * u;
         opacity = 1 - u * u;
+      } else if (lit[i]) {
+        // Lit: a bright halo and a ring that beats, seen from across the room.
+        const beat = 0.5 + 0.5 * Math.sin(8 * time);
+        f.circle(x, y, R * 2).fill({ color: 0xfff3b0, alpha: 0.35 + 0.15 * beat });
+        f.circle(x, y, R * (2.1 + 0.3 * beat)).stroke({ width: Math.max(2, R * 0.18), color: 0xffffff, alpha: 0.75 });
+        R *= 1.15;
       } else f.circle(x, y, R * 1.6).fill({ color: 0xffe27a, alpha: 0.18 });
       const pts: number[] = [];
       for (let k = 0; k < 10; k++) {
