@@ -1,11 +1,11 @@
-// `node scripts/lab-rope-place.mjs [--wide] [--min=0.5] level [from to]`: a place for the three stars of a rope
+// `node scripts/lab-rope-place.mjs [--wide] [--min=0.5] [--margin=0.08] [--spread=0.9] level [from to]`: a place for the three stars of a rope
 // lab level (1-based, of LEVELS or with --wide of WIDE_LEVELS) that its plan (games/lab-rope/plans.ts)
 // earns over as wide a window of last cuts as can be had. Plays the last cut every 0.04 s from
 // `from` to `to` s (default the plan's times) in the engine and records each winning flight; then
 // looks over a 0.1 m grid for points that every flight of a run of winning cuts passes within
-// STAR_REACH less 8 cm of (a margin for a changed step), that the swing left untouched for 8 s
+// STAR_REACH less --margin m of (a margin for a changed step), that the swing left untouched for 8 s
 // keeps 15 cm clear of, and that lie in the room below the banner; and prints, of the runs of cuts
-// --min s wide (0.5 s by default), the one with three such points farthest apart (at least 0.9 m). A design aid, slow (a
+// --min s wide (0.5 s by default), the one with three such points farthest apart (at least --spread m). A design aid, slow (a
 // minute a level).
 import { importSource } from './build.mjs';
 
@@ -24,8 +24,10 @@ const plan = rope.plansOf(set)[index];
 const level = set[index];
 const from = args[1] ?? plan.from,
   to = args[2] ?? plan.to;
+const option = (name, fallback) => Number(process.argv.find((a) => a.startsWith(`--${name}=`))?.split('=')[1] ?? fallback);
 const DT = 0.04,
-  MARGIN = 0.08;
+  MARGIN = option('margin', 0.08),
+  SPREAD = option('spread', 0.9);
 
 /** The ball's path (x, y pairs) played with the plan's earlier cuts and the last at `t` (null: never), and the outcome. */
 function trace(t) {
@@ -65,14 +67,14 @@ for (let x = -room + 0.35; x <= room - 0.35; x += 0.1)
     const cover = flights.map((f) => f.won && near(f.path, x, y, rope.STAR_REACH - MARGIN));
     if (cover.some(Boolean)) points.push({ x, y, cover });
   }
-const minWidth = Number(process.argv.find((a) => a.startsWith('--min='))?.slice(6) ?? 0.5);
+const minWidth = option('min', 0.5);
 const span = Math.round(minWidth / DT);
 let best = null;
 for (let i = 0; i + span < times.length; i++) {
   const j = i + span;
   const ok = points.filter((p) => p.cover.slice(i, j + 1).every(Boolean));
   let pick = null,
-    spread = best ? best.spread : 0.9;
+    spread = best ? best.spread : SPREAD;
   for (let a = 0; a < ok.length; a++)
     for (let b = a + 1; b < ok.length; b++) {
       const dab = Math.hypot(ok[a].x - ok[b].x, ok[a].y - ok[b].y);

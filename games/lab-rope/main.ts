@@ -1,6 +1,6 @@
 /**
  * Lab: ropes (Ramtal and Dobre ch. 13), as a game: a ball hangs from one to three ropes; cut them so
- * that it falls into the basket, catching the stars on its way (scene.ts: five levels). Each rope is a
+ * that it falls into the basket, catching the stars on its way (scene.ts: eight levels, each with its own idea). Each rope is a
  * chain of point masses joined by distance joints that only pull (createRope), solved in the contact
  * solver's soft substeps; a cut removes one link, and the two pieces hang and fall as two ropes
  * (view.ts draws each piece as its own cord).
@@ -8,7 +8,7 @@
  * Input: swipe across a rope to cut it (cut.ts: every rope the stroke crosses, however fast), or tap
  * on it; drag the ball to push it while a rope still holds it (a mouse joint of limited force; a drag
  * begun on the ball never cuts, however fast). A miss holds the scene until a tap, click or key starts again. Keys: P pause, N step,
- * R retry, L next level (once the level is cleared). URL: ?level (1-5), ?links (links a metre, 2-40), ?gravity (0-30 m/s^2),
+ * R retry, L next level (once the level is cleared). URL: ?level (1-8), ?links (links a metre, 2-40), ?gravity (0-30 m/s^2),
  * ?room (auto, wide or upright: a screen wider than tall plays the levels in the wide room,
  * scene.ts WIDE_LEVELS, an upright one in the upright room, LEVELS), ?debug (the frame rate, body
  * and step counts and the largest link error in the side column; a player sees the level, the
@@ -295,7 +295,8 @@ const panel = createPanel(
       max: 30,
       step: 0.01,
       onChange: (g) => {
-        shell.world.gravity[1] = -(g as number);
+        // The level's own share of it (the Moon's level: scene.ts Level.gravityScale).
+        shell.world.gravity[1] = -(g as number) * (scene.level.gravityScale ?? 1);
       },
     },
     { type: 'button', key: 'retry', label: 'retry (R)' },

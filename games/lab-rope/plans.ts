@@ -33,13 +33,18 @@ export interface LevelPlan {
   /** The times the last cut is measured over, s. */
   readonly from: number;
   readonly to: number;
+  /**
+   * The widest run of last-cut times, s, that win all three stars, measured in the engine every
+   * 0.02 s at the rope's middle (scripts/lab-rope-stars.mjs --engine): its first and last time.
+   */
+  readonly threeStars: readonly [number, number];
 }
 
 /** The plans of LEVELS, in order. */
 export const PLANS: readonly LevelPlan[] = Object.freeze([
-  { before: [], last: 0, from: 0.2, to: 4.5 },
-  { before: [[0.5, 0]], last: 1, from: 0.6, to: 3 },
-  { before: [], last: 0, from: 0.2, to: 4 },
+  { before: [], last: 0, from: 0.2, to: 4.5, threeStars: [1, 1.88] },
+  { before: [[0.5, 0]], last: 1, from: 0.6, to: 3, threeStars: [1.34, 2.46] },
+  { before: [], last: 0, from: 0.2, to: 4, threeStars: [0.82, 1.38] },
   {
     before: [
       [2.03, 2],
@@ -48,15 +53,19 @@ export const PLANS: readonly LevelPlan[] = Object.freeze([
     last: 0,
     from: 2.4,
     to: 6,
+    threeStars: [4.26, 6.0],
   },
-  { before: [], last: 0, push: 5, from: 0.2, to: 6 },
+  { before: [], last: 0, push: 5, from: 0.2, to: 6, threeStars: [3.54, 4.28] },
+  { before: [], last: 0, from: 0.3, to: 8, threeStars: [2.3, 2.92] },
+  { before: [], last: 0, from: 0.3, to: 3.5, threeStars: [0.9, 1.58] },
+  { before: [], last: 0, from: 0.3, to: 3.5, threeStars: [1.02, 1.56] },
 ]);
 
 /** The plans of WIDE_LEVELS, in order. */
 export const WIDE_PLANS: readonly LevelPlan[] = Object.freeze([
-  { before: [], last: 0, from: 0.8, to: 3 },
-  { before: [[0.5, 0]], last: 1, from: 0.6, to: 3.2 },
-  { before: [], last: 0, from: 0.3, to: 3.5 },
+  { before: [], last: 0, from: 0.8, to: 3, threeStars: [1.42, 1.86] },
+  { before: [[0.5, 0]], last: 1, from: 0.6, to: 3.2, threeStars: [1.56, 2.18] },
+  { before: [], last: 0, from: 0.3, to: 3.5, threeStars: [1.9, 2.5] },
   {
     before: [
       [1.0, 2],
@@ -65,8 +74,12 @@ export const WIDE_PLANS: readonly LevelPlan[] = Object.freeze([
     last: 0,
     from: 1.4,
     to: 7,
+    threeStars: [2.7, 3.32],
   },
-  { before: [], last: 0, push: 5, from: 0.2, to: 6 },
+  { before: [], last: 0, push: 5, from: 0.2, to: 6, threeStars: [4.08, 4.8] },
+  { before: [], last: 0, from: 0.3, to: 8, threeStars: [2.86, 3.44] },
+  { before: [], last: 0, from: 0.3, to: 3.5, threeStars: [1.22, 1.68] },
+  { before: [], last: 0, from: 0.3, to: 3.5, threeStars: [1.34, 1.78] },
 ]);
 
 /** The plans of `levels` (LEVELS or WIDE_LEVELS). */

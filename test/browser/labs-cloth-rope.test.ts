@@ -940,7 +940,7 @@ for (const [device, options] of [
     it("the level's banner keeps clear of the stars on every level", async () => {
       // Each level's banner box against each star's glow (0.38 m round it), at the level's start:
       // level 1's name was drawn over its low star (3.2 m up, under the banner's 3.4 m).
-      for (let level = 1; level <= 5; level++) {
+      for (let level = 1; level <= 8; level++) {
         const r = await g.page.evaluate((n) => {
           const w = window.game as unknown as RopeLab & {
             goTo(n: number): void;
@@ -1113,7 +1113,7 @@ for (const [device, options] of [
       });
       expect(column.stats).toBe(0);
       expect(column.fps).toBe(true);
-      expect(column.info).toContain('level 1 of 5: Let go');
+      expect(column.info).toContain('level 1 of 8: Let go');
       expect(column.info).not.toMatch(/link error|ball speed/);
       const statusHeight = await g.page.evaluate(() => document.querySelector('.lab-status')!.getBoundingClientRect().height);
       const [x, y] = await ropeMiddle(g, 0);
@@ -1197,7 +1197,7 @@ for (const [device, options] of [
         column: document.querySelector('.bp-hud [data-lab="info"]')!.textContent,
         slider: (document.querySelector('.bp-side .lil-gui input') as HTMLInputElement | null)?.value,
       }));
-      expect(shown.column).toContain('level 2 of 5: Two ropes');
+      expect(shown.column).toContain('level 2 of 8: Two ropes');
       expect(shown.column).toMatch(/stars 0 of 3\s*cuts 0/);
       expect(shown.slider).toBe('2');
       expect(g.errors).toEqual([]);
