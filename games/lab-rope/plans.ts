@@ -76,7 +76,7 @@ export const WIDE_PLANS: readonly LevelPlan[] = Object.freeze([
     to: 7,
     threeStars: [2.7, 3.32],
   },
-  { before: [], last: 0, push: 5, from: 0.2, to: 6, threeStars: [4.08, 4.8] },
+  { before: [], last: 0, push: 5, from: 0.2, to: 6, threeStars: [4.08, 5.02] },
   { before: [], last: 0, from: 0.3, to: 8, threeStars: [2.86, 3.44] },
   { before: [], last: 0, from: 0.3, to: 3.5, threeStars: [1.22, 1.68] },
   { before: [], last: 0, from: 0.3, to: 3.5, threeStars: [1.34, 1.78] },

@@ -351,9 +351,9 @@ export const WIDE_LEVELS: readonly Level[] = Object.freeze([
     basketWidth: 0.85,
     basketDepth: 0.6,
     stars: [
-      [0.55, 4.0],
-      [-4.05, 3.0],
-      [-1.15, 1.8],
+      [0.35, 3.95],
+      [-3.55, 3.62],
+      [0.45, 3.0],
     ],
     blocks: [{ at: [0.45, 0.6], half: [0.55, 0.6] }],
     view: WIDE_VIEW,
