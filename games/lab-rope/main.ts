@@ -713,7 +713,7 @@ function drawBasketCue(now: number): void {
   overlay
     .moveTo(cam.toScreenX(bx - half), cam.toScreenY(top))
     .lineTo(cam.toScreenX(bx + half), cam.toScreenY(top))
-    .stroke({ width: Math.max(4, cam.toScreenLength(0.09)), color: 0x9ff0b8, alpha: a, cap: 'round' });
+    .stroke({ width: Math.max(5, cam.toScreenLength(0.12)), color: 0x9ff0b8, alpha: a, cap: 'round' });
 }
 
 /**
@@ -1008,6 +1008,8 @@ shell.expose({
    * in the basket's opening.
    */
   flight: () => ({ path: [...flight], inBasket: flightInBasket }),
+  /** The cue to cut as last drawn: which stars glow (a cut now would fly through them) and whether the basket's rim does. */
+  cue: () => ({ stars: [...lit], basket: forecastInBasket }),
   /** The flight hint's caption as last drawn ('' while hidden). */
   hintCaption: () => (hintCaption.visible ? hintCaption.text : ''),
   /**

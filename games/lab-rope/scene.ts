@@ -207,7 +207,7 @@ export const LEVELS: readonly Level[] = Object.freeze([
     ],
     blocks: [
       { at: [1.0, 1.9], half: [0.12, 1.9] },
-      { at: [1.0, 7.65], half: [0.12, 1.45] },
+      { at: [1.0, 7.35], half: [0.12, 1.15] },
     ],
     view: VIEW,
   },
@@ -396,7 +396,7 @@ export const WIDE_LEVELS: readonly Level[] = Object.freeze([
     ],
     blocks: [
       { at: [0.8, 1.0], half: [0.12, 1.0] },
-      { at: [0.8, 6.0], half: [0.12, 1.0] },
+      { at: [0.8, 5.7], half: [0.12, 0.7] },
     ],
     view: WIDE_VIEW,
     room: WIDE_ROOM_HALF_WIDTH,

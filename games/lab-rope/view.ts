@@ -225,9 +225,10 @@ export class RopeView {
       } else if (lit[i]) {
         // Lit: a bright halo and a ring that beats, seen from across the room.
         const beat = 0.5 + 0.5 * Math.sin(8 * time);
-        f.circle(x, y, R * 2).fill({ color: 0xfff3b0, alpha: 0.35 + 0.15 * beat });
-        f.circle(x, y, R * (2.1 + 0.3 * beat)).stroke({ width: Math.max(2, R * 0.18), color: 0xffffff, alpha: 0.75 });
-        R *= 1.15;
+        f.circle(x, y, R * 1.6).fill({ color: 0xffe27a, alpha: 0.22 });
+        f.circle(x, y, R * (1.9 + 0.3 * beat)).stroke({ width: Math.max(3, R * 0.28), color: 0xffd23f, alpha: 0.95 });
+        f.circle(x, y, R * (2.5 + 0.5 * beat)).stroke({ width: Math.max(2, R * 0.12), color: 0xffe27a, alpha: 0.5 * (1 - beat) });
+        R *= 1.25;
       } else f.circle(x, y, R * 1.6).fill({ color: 0xffe27a, alpha: 0.18 });
       const pts: number[] = [];
       for (let k = 0; k < 10; k++) {
@@ -344,6 +345,22 @@ export class RopeView {
     // Wallpaper stripes.
     const room = roomHalfWidth(level);
     for (let x = -room - 1.5; x <= room + 1.5; x += 0.5) g.rect(X(x), 0, Math.max(1, S(0.16)), H).fill({ color: 0xffffff, alpha: 0.035 });
+    // A level on the Moon (low gravity): a large pale moon, its craters, on the wallpaper's top
+    // right, under the beam, so the level does not look like any other.
+    if ((level.gravityScale ?? 1) < 0.5) {
+      const top = Math.max(...level.anchors.map((a) => a[1]));
+      const mx = X(room - 0.75),
+        my = Y(top - 0.75),
+        mr = S(0.45);
+      g.circle(mx, my, mr * 1.5).fill({ color: 0xf3ecc8, alpha: 0.08 });
+      g.circle(mx, my, mr).fill({ color: 0xe8e1bd, alpha: 0.55 });
+      for (const [cx, cy, cr] of [
+        [-0.3, -0.2, 0.22],
+        [0.35, 0.15, 0.16],
+        [-0.05, 0.45, 0.12],
+      ] as const)
+        g.circle(mx + cx * mr, my + cy * mr, cr * mr).fill({ color: 0xb9b294, alpha: 0.45 });
+    }
     // The floor: boards.
     const floor = Y(0);
     g.rect(0, floor, W, H - floor).fill({ color: 0x6b4a2f });
