@@ -74,7 +74,7 @@ export const WIDE_PLANS: readonly LevelPlan[] = Object.freeze([
     last: 0,
     from: 1.4,
     to: 7,
-    threeStars: [2.7, 3.32],
+    threeStars: [2.68, 3.32],
   },
   { before: [], last: 0, push: 5, from: 0.2, to: 6, threeStars: [4.08, 5.02] },
   { before: [], last: 0, from: 0.3, to: 8, threeStars: [2.86, 3.44] },

@@ -332,7 +332,7 @@ export const WIDE_LEVELS: readonly Level[] = Object.freeze([
     basketDepth: 0.75,
     stars: [
       [-0.15, 4.4],
-      [-4.85, 4.0],
+      [-4.6, 4.0],
       [-2.35, 2.3],
     ],
     view: WIDE_VIEW,
