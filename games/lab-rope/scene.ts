@@ -496,7 +496,12 @@ export function predictFlight(
       py < r ||
       Math.abs(px) > room - r ||
       (Math.abs(px - bx) < half + WALL + r && py < by + level.basketDepth + r && !opening) ||
-      (level.blocks ?? []).some((b) => Math.abs(px - b.at[0]) < b.half[0] + r && Math.abs(py - b.at[1]) < b.half[1] + r);
+      (level.blocks ?? []).some((b) => {
+        // The ball against the block's box: the distance from its centre to the box, round corners too.
+        const dx = Math.max(0, Math.abs(px - b.at[0]) - b.half[0]),
+          dy = Math.max(0, Math.abs(py - b.at[1]) - b.half[1]);
+        return dx * dx + dy * dy < r * r;
+      });
     out.push(px, py);
     if (opening) return true;
     if (hit) return false;
