@@ -81,7 +81,7 @@ const VIEW = { minX: -2.9, minY: -0.35, maxX: 2.9, maxY: 9.1 } as const;
 export const LEVELS: readonly Level[] = Object.freeze([
   {
     name: 'Let go',
-    hint: 'Swipe across the rope to cut it. Time the cut so the ball falls into the basket.',
+    hint: 'Swipe across the rope to cut it. Cut when the stars and the basket light up.',
     anchors: [[0, 8.4]],
     ball: [-2, 6.7],
     // The basket stands under the right end of the swing, where the ball slows, stops and turns
