@@ -3,7 +3,8 @@
  * that it falls into the basket, catching the stars on its way (scene.ts: eight levels, each with its own idea). Each rope is a
  * chain of point masses joined by distance joints that only pull (createRope), solved in the contact
  * solver's soft substeps; a cut removes one link, and the two pieces hang and fall as two ropes
- * (view.ts draws each piece as its own cord).
+ * (view.ts draws each piece as its own cord). While one rope holds the ball, the stars a cut now
+ * would fly it through ring gold and the basket's rim glows when it would land there: the cue to cut.
  *
  * Input: swipe across a rope to cut it (cut.ts: every rope the stroke crosses, however fast), or tap
  * on it; drag the ball to push it while a rope still holds it (a mouse joint of limited force; a drag
