@@ -1,5 +1,5 @@
 // `node scripts/lab-rope-cuts.mjs [--wide] [level ...]`: how the rope lab's levels (1-based; default
-// all five, of LEVELS or with --wide of WIDE_LEVELS) answer the time and the place of their last cut,
+// all, of LEVELS or with --wide of WIDE_LEVELS) answer the time and the place of their last cut,
 // headless. For each level the earlier cuts are made at fixed times at their ropes' middles, and the
 // last cut is swept over a range of times, made at a tenth, half and nine tenths of the way down its
 // rope (a swipe may cross it anywhere). Prints, per place, one character a time: the stars won
@@ -12,7 +12,7 @@ import { importSource } from './build.mjs';
 
 const rope = await importSource(
   'lab-rope-cuts',
-  "export * from './games/lab-rope/scene.ts'; export { slotOf, step } from '@bitphysics/physics';",
+  "export * from './games/lab-rope/scene.ts'; export { PLANS, WIDE_PLANS } from './games/lab-rope/plans.ts'; export { slotOf, step } from '@bitphysics/physics';",
 );
 const wide = process.argv.includes('--wide');
 const levels = process.argv
@@ -20,43 +20,16 @@ const levels = process.argv
   .filter((a) => !a.startsWith('--'))
   .map(Number);
 for (const n of levels)
-  if (!(Number.isInteger(n) && n >= 1 && n <= 5)) throw new RangeError(`lab-rope-cuts: levels are integers 1-5, got ${n}`);
+  if (!(Number.isInteger(n) && n >= 1 && n <= rope.LEVELS.length))
+    throw new RangeError(`lab-rope-cuts: levels are integers 1-${rope.LEVELS.length}, got ${n}`);
 
-/**
- * Per level: the earlier cuts ([time s, rope]), the rope cut last, the times it is swept over (from,
- * to, step, s) and the sideways push given to the ball at the start, m/s.
- */
-const PLANS = wide
-  ? [
-      { before: [], last: 0, times: [0.8, 3.0, 0.04], push: 0 },
-      { before: [[0.5, 0]], last: 1, times: [0.6, 3.2, 0.04], push: 0 },
-      { before: [], last: 0, times: [0.3, 3.5, 0.04], push: 0 },
-      {
-        before: [
-          [1.0, 2],
-          [1.3, 1],
-        ],
-        last: 0,
-        times: [1.4, 7, 0.05],
-        push: 0,
-      },
-      { before: [], last: 0, times: [0.2, 6, 0.05], push: 5 },
-    ]
-  : [
-      { before: [], last: 0, times: [0.2, 4.5, 0.02], push: 0 },
-      { before: [[0.5, 0]], last: 1, times: [0.6, 3, 0.04], push: 0 },
-      { before: [], last: 0, times: [0.2, 4, 0.04], push: 0 },
-      {
-        before: [
-          [2.03, 2],
-          [2.36, 1],
-        ],
-        last: 0,
-        times: [2.4, 6, 0.05],
-        push: 0,
-      },
-      { before: [], last: 0, times: [0.2, 6, 0.05], push: 5 },
-    ];
+/** Per level: its plan (games/lab-rope/plans.ts), the last cut swept every 0.04 s (0.02 s on upright level 1). */
+const PLANS = (wide ? rope.WIDE_PLANS : rope.PLANS).map((p, i) => ({
+  before: p.before,
+  last: p.last,
+  times: [p.from, p.to, !wide && i === 0 ? 0.02 : 0.04],
+  push: p.push ?? 0,
+}));
 const PLACES = [0.1, 0.5, 0.9];
 const set = wide ? rope.WIDE_LEVELS : rope.LEVELS;
 
@@ -81,7 +54,7 @@ function play(index, plan, t, place) {
 
 /** Per level measured: its number, the windows won at the middle place and their width in all, s. */
 const summary = [];
-for (const n of levels.length ? levels : [1, 2, 3, 4, 5]) {
+for (const n of levels.length ? levels : set.map((_, i) => i + 1)) {
   const plan = PLANS[n - 1];
   const [from, to, dt] = plan.times;
   const times = [];

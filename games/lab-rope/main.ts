@@ -1,14 +1,15 @@
 /**
  * Lab: ropes (Ramtal and Dobre ch. 13), as a game: a ball hangs from one to three ropes; cut them so
- * that it falls into the basket, catching the stars on its way (scene.ts: five levels). Each rope is a
+ * that it falls into the basket, catching the stars on its way (scene.ts: eight levels, each with its own idea). Each rope is a
  * chain of point masses joined by distance joints that only pull (createRope), solved in the contact
  * solver's soft substeps; a cut removes one link, and the two pieces hang and fall as two ropes
- * (view.ts draws each piece as its own cord).
+ * (view.ts draws each piece as its own cord). While one rope holds the ball, the stars a cut now
+ * would fly it through ring gold and the basket's rim glows when it would land there: the cue to cut.
  *
  * Input: swipe across a rope to cut it (cut.ts: every rope the stroke crosses, however fast), or tap
  * on it; drag the ball to push it while a rope still holds it (a mouse joint of limited force; a drag
  * begun on the ball never cuts, however fast). A miss holds the scene until a tap, click or key starts again. Keys: P pause, N step,
- * R retry, L next level (once the level is cleared). URL: ?level (1-5), ?links (links a metre, 2-40), ?gravity (0-30 m/s^2),
+ * R retry, L next level (once the level is cleared). URL: ?level (1-8), ?links (links a metre, 2-40), ?gravity (0-30 m/s^2),
  * ?room (auto, wide or upright: a screen wider than tall plays the levels in the wide room,
  * scene.ts WIDE_LEVELS, an upright one in the upright room, LEVELS), ?debug (the frame rate, body
  * and step counts and the largest link error in the side column; a player sees the level, the
@@ -39,6 +40,7 @@ import {
   DEFAULTS,
   LEVELS,
   type Level,
+  pathReaches,
   predictFlight,
   RopeGame,
   type RopeScene,
@@ -99,6 +101,20 @@ function flightHintOn(): boolean {
 /** The flight hint's path as last drawn (x, y pairs, m; empty while hidden), and whether it ends in the basket. */
 const flight: number[] = [];
 let flightInBasket = false;
+/**
+ * Where the ball would fly if the last rope holding it were cut now (predictFlight from the ball as
+ * drawn; x, y pairs, m), while exactly one rope holds it and the level is on; empty otherwise.
+ * Worked out on every level whether its dots show or not: the cue to cut comes from it (see `lit`).
+ */
+const forecast: number[] = [];
+let forecastInBasket = false;
+/**
+ * The cue to cut, on every level: the stars not caught yet that a cut now would fly the ball
+ * through glow bright (view.ts), and the basket's rim does once a cut now would land in it. A swing
+ * passes the moment when all three stars and the basket light together, and a player sees it
+ * coming, instead of guessing a window a tenth of a second wide.
+ */
+const lit = [false, false, false];
 let scene: RopeScene;
 let game: RopeGame;
 let cuts = 0;
@@ -280,7 +296,8 @@ const panel = createPanel(
       max: 30,
       step: 0.01,
       onChange: (g) => {
-        shell.world.gravity[1] = -(g as number);
+        // The level's own share of it (the Moon's level: scene.ts Level.gravityScale).
+        shell.world.gravity[1] = -(g as number) * (scene.level.gravityScale ?? 1);
       },
     },
     { type: 'button', key: 'retry', label: 'retry (R)' },
@@ -600,8 +617,23 @@ function draw(alpha: number, world: PhysicsWorld): void {
   const dt = Math.min(0.05, now - lastFrame);
   lastFrame = now;
   const cam = renderer.camera;
-  view.update(world, scene.level, scene.ropes, scene.ball, game.caught, cam, alpha, now, app.screen.width, app.screen.height, caughtAt);
+  forecastCut(world, alpha);
+  view.update(
+    world,
+    scene.level,
+    scene.ropes,
+    scene.ball,
+    game.caught,
+    cam,
+    alpha,
+    now,
+    app.screen.width,
+    app.screen.height,
+    caughtAt,
+    lit,
+  );
   overlay.clear();
+  drawBasketCue(now);
   // The swipe: the last 0.25 s of the stroke, fading.
   while (slash.length > 0 && now - slash[0]!.t > 0.25) slash.shift();
   for (let i = 1; i < slash.length; i++) {
@@ -617,7 +649,7 @@ function draw(alpha: number, world: PhysicsWorld): void {
       .lineTo(b.x, b.y)
       .stroke({ width: 2.5, color: 0xffffff, alpha: 0.9 * fade, cap: 'round' });
   }
-  drawFlight(world, alpha, now);
+  drawFlight(now);
   // The push: a band from the ball to the pointer.
   if (push && isAlive(world, push)) {
     const e = slotOf(scene.ball);
@@ -645,32 +677,58 @@ function draw(alpha: number, world: PhysicsWorld): void {
   showReadout(world);
 }
 
-/**
- * The flight hint (see flightHintOn): dots along predictFlight's path from the ball as drawn, fading
- * along the way, every 0.08 s of flight; a small ring where it ends.
- */
-function drawFlight(world: PhysicsWorld, alpha: number, now: number): void {
-  flight.length = 0;
-  flightInBasket = false;
-  hintCaption.visible = false;
-  if (!flightHintOn()) return;
-  const cam = renderer.camera;
+/** Works out `forecast` and `lit` for the frame at interpolation factor `alpha`. */
+function forecastCut(world: PhysicsWorld, alpha: number): void {
+  forecast.length = 0;
+  forecastInBasket = false;
+  lit.fill(false);
+  if (game.outcome !== 'playing' || game.holding() !== 1) return;
   const e = slotOf(scene.ball),
     P = world.components.Position,
     O = world.components.PreviousPosition,
     V = world.components.Velocity;
-  const c = BALL_DRAG / world.components.Mass.value[e]!;
-  flightInBasket = predictFlight(
+  forecastInBasket = predictFlight(
     scene.level,
     O.x[e]! + (P.x[e]! - O.x[e]!) * alpha,
     O.y[e]! + (P.y[e]! - O.y[e]!) * alpha,
     V.x[e]!,
     V.y[e]!,
     -world.gravity[1]!,
-    c,
-    flight,
+    BALL_DRAG / world.components.Mass.value[e]!,
+    forecast,
     0.04,
   );
+  scene.level.stars.forEach(([sx, sy], i) => {
+    lit[i] = !game.caught[i] && pathReaches(forecast, sx, sy);
+  });
+}
+
+/** The basket's rim lit (see `lit`): a soft green band along its walls' tops and its opening, pulsing at `now` s. */
+function drawBasketCue(now: number): void {
+  if (!forecastInBasket) return;
+  const cam = renderer.camera;
+  const [bx, by] = scene.level.basket,
+    half = scene.level.basketWidth / 2 + 0.05,
+    top = by + scene.level.basketDepth;
+  const a = 0.55 + 0.25 * Math.sin(8 * now);
+  overlay
+    .moveTo(cam.toScreenX(bx - half), cam.toScreenY(top))
+    .lineTo(cam.toScreenX(bx + half), cam.toScreenY(top))
+    .stroke({ width: Math.max(5, cam.toScreenLength(0.12)), color: 0x9ff0b8, alpha: a, cap: 'round' });
+}
+
+/**
+ * The flight hint (see flightHintOn): dots along the forecast path from the ball as drawn, fading
+ * along the way, every 0.08 s of flight; a small ring where it ends.
+ */
+function drawFlight(now: number): void {
+  flight.length = 0;
+  flightInBasket = false;
+  hintCaption.visible = false;
+  if (!flightHintOn() || forecast.length === 0) return;
+  const cam = renderer.camera;
+  flight.push(...forecast);
+  flightInBasket = forecastInBasket;
   const n = flight.length / 2;
   const dot = Math.max(2, cam.toScreenLength(0.045));
   for (let i = 2; i < n; i += 2) {
@@ -951,6 +1009,8 @@ shell.expose({
    * in the basket's opening.
    */
   flight: () => ({ path: [...flight], inBasket: flightInBasket }),
+  /** The cue to cut as last drawn: which stars glow (a cut now would fly through them) and whether the basket's rim does. */
+  cue: () => ({ stars: [...lit], basket: forecastInBasket }),
   /** The flight hint's caption as last drawn ('' while hidden). */
   hintCaption: () => (hintCaption.visible ? hintCaption.text : ''),
   /**

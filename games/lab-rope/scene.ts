@@ -48,6 +48,8 @@ export interface Level {
   readonly view: { readonly minX: number; readonly minY: number; readonly maxX: number; readonly maxY: number };
   /** Half the room's width, m: its side walls' inner faces are this far from x = 0. Default ROOM_HALF_WIDTH. */
   readonly room?: number;
+  /** The level's gravity as a share of the lab's (RopeSceneParams.gravity), default 1: the Moon's is 0.165. */
+  readonly gravityScale?: number;
 }
 
 /** Radius of the ball, m. */
@@ -79,7 +81,7 @@ const VIEW = { minX: -2.9, minY: -0.35, maxX: 2.9, maxY: 9.1 } as const;
 export const LEVELS: readonly Level[] = Object.freeze([
   {
     name: 'Let go',
-    hint: 'Swipe across the rope to cut it. Time the cut so the ball falls into the basket.',
+    hint: 'Swipe across the rope to cut it. Cut when the stars and the basket light up.',
     anchors: [[0, 8.4]],
     ball: [-2, 6.7],
     // The basket stands under the right end of the swing, where the ball slows, stops and turns
@@ -125,9 +127,9 @@ export const LEVELS: readonly Level[] = Object.freeze([
     basketWidth: 1.1,
     basketDepth: 0.7,
     stars: [
-      [0.95, 5.85],
-      [1.75, 4.9],
-      [2.1, 3.1],
+      [0.55, 5.7],
+      [1.85, 3.7],
+      [2.05, 1.3],
     ],
     blocks: [{ at: [0.75, 1.5], half: [0.12, 1.5] }],
     view: VIEW,
@@ -162,11 +164,69 @@ export const LEVELS: readonly Level[] = Object.freeze([
     basketWidth: 1.2,
     basketDepth: 0.6,
     stars: [
-      [0.1, 5.75],
-      [1.2, 6.9],
-      [2.1, 4.6],
+      [0.95, 7.0],
+      [-2.35, 5.6],
+      [2.05, 3.6],
     ],
     blocks: [{ at: [2.05, 1.2], half: [0.65, 1.3] }],
+    view: VIEW,
+  },
+  {
+    name: 'Moon',
+    hint: 'On the Moon the ball floats: watch the glow and cut when the stars light up.',
+    anchors: [[-1.0, 8.4]],
+    ball: [-2.5, 7.2],
+    // A sixth of the Earth's gravity: the swing takes 7 s, and a cut on the way up to its right
+    // end drifts onto the high basket (won 1.6-3.2 s).
+    gravityScale: 0.165,
+    basket: [1.75, 3.0],
+    basketWidth: 1.2,
+    basketDepth: 0.6,
+    stars: [
+      [0.95, 6.7],
+      [1.15, 5.3],
+      [2.05, 4.2],
+    ],
+    blocks: [{ at: [1.75, 1.5], half: [0.7, 1.5] }],
+    view: VIEW,
+  },
+  {
+    name: 'Window',
+    hint: 'Throw the ball through the window in the wall.',
+    anchors: [[-1.0, 8.4]],
+    ball: [-2.4, 6.2],
+    // A cut on the way up to the swing's right end throws the ball through the gap between the
+    // walls (won 0.9-1.55 s); earlier it strikes the low wall, later the high one or drops short.
+    basket: [1.95, 0],
+    basketWidth: 1.2,
+    basketDepth: 0.75,
+    stars: [
+      [0.55, 5.1],
+      [1.95, 3.5],
+      [2.25, 1.4],
+    ],
+    blocks: [
+      { at: [1.0, 1.9], half: [0.12, 1.9] },
+      { at: [1.0, 7.35], half: [0.12, 1.15] },
+    ],
+    view: VIEW,
+  },
+  {
+    name: 'Off the wall',
+    hint: 'The basket hides behind a wall: bounce the ball off the side of the room.',
+    anchors: [[-0.6, 8.4]],
+    ball: [-2.5, 7.2],
+    // A cut as the ball swings up to the right throws it at the room's right wall, and it drops off
+    // the wall into the basket behind the tall one (won 0.8-1.55 s).
+    basket: [2.05, 0],
+    basketWidth: 1.1,
+    basketDepth: 0.75,
+    stars: [
+      [1.95, 5.8],
+      [2.05, 3.6],
+      [2.05, 1.4],
+    ],
+    blocks: [{ at: [1.25, 1.8], half: [0.12, 1.8] }],
     view: VIEW,
   },
 ]);
@@ -176,7 +236,7 @@ export const WIDE_ROOM_HALF_WIDTH = 5.2;
 const WIDE_VIEW = { minX: -5.4, minY: -0.35, maxX: 5.4, maxY: 7.0 } as const;
 
 /**
- * The levels for a screen wider than tall: the same five ideas in a room twice as wide and 2 m
+ * The levels for a screen wider than tall: the same eight ideas in a room twice as wide and 2 m
  * lower (10.4 x 7 m), so a desktop window draws them large (94 px a metre at 1280 x 800, the room
  * 1010 px wide; LEVELS' upright room, drawn as large as the window's height allows, would be 415 px
  * wide). Laid out with the ball's flights measured like LEVELS' (test/games/lab-rope.test.ts):
@@ -201,9 +261,9 @@ export const WIDE_LEVELS: readonly Level[] = Object.freeze([
     basketWidth: 4.2,
     basketDepth: 0.75,
     stars: [
-      [2.0, 3.25],
-      [2.04, 2.4],
-      [2.07, 1.55],
+      [2.35, 3.4],
+      [2.95, 3.2],
+      [3.15, 2.6],
     ],
     view: WIDE_VIEW,
     room: WIDE_ROOM_HALF_WIDTH,
@@ -224,9 +284,9 @@ export const WIDE_LEVELS: readonly Level[] = Object.freeze([
     basketWidth: 1.5,
     basketDepth: 0.75,
     stars: [
-      [0.6, 2.75],
-      [3.0, 3.15],
-      [3.55, 2.0],
+      [-1.15, 3.4],
+      [1.55, 3.3],
+      [3.55, 1.4],
     ],
     view: WIDE_VIEW,
     room: WIDE_ROOM_HALF_WIDTH,
@@ -245,9 +305,9 @@ export const WIDE_LEVELS: readonly Level[] = Object.freeze([
     basketWidth: 3.0,
     basketDepth: 0.7,
     stars: [
-      [1.75, 5.0],
-      [2.15, 4.35],
-      [2.4, 3.4],
+      [1.05, 3.3],
+      [0.95, 2.3],
+      [0.85, 1.3],
     ],
     blocks: [{ at: [-0.3, 1.2], half: [0.12, 1.2] }],
     view: WIDE_VIEW,
@@ -271,9 +331,9 @@ export const WIDE_LEVELS: readonly Level[] = Object.freeze([
     basketWidth: 1.3,
     basketDepth: 0.75,
     stars: [
-      [-1.6, 2.25],
-      [-4.45, 4.45],
-      [-4.05, 1.95],
+      [-0.15, 4.4],
+      [-4.6, 4.0],
+      [-2.35, 2.3],
     ],
     view: WIDE_VIEW,
     room: WIDE_ROOM_HALF_WIDTH,
@@ -296,6 +356,67 @@ export const WIDE_LEVELS: readonly Level[] = Object.freeze([
       [0.45, 3.0],
     ],
     blocks: [{ at: [0.45, 0.6], half: [0.55, 0.6] }],
+    view: WIDE_VIEW,
+    room: WIDE_ROOM_HALF_WIDTH,
+  },
+  {
+    name: 'Moon',
+    hint: LEVELS[5]!.hint,
+    anchors: [[-2.8, 6.3]],
+    ball: [-4.8, 5.0],
+    // A sixth of the Earth's gravity: a cut as the ball drifts up to the right end of its slow
+    // swing floats it onto the high basket (won 2.15-4.05 s).
+    gravityScale: 0.165,
+    basket: [-0.2, 2.4],
+    basketWidth: 1.5,
+    basketDepth: 0.6,
+    stars: [
+      [-0.25, 4.7],
+      [-0.55, 3.9],
+      [0.25, 3.6],
+    ],
+    blocks: [{ at: [-0.2, 1.2], half: [0.85, 1.2] }],
+    view: WIDE_VIEW,
+    room: WIDE_ROOM_HALF_WIDTH,
+  },
+  {
+    name: 'Window',
+    hint: LEVELS[6]!.hint,
+    anchors: [[-2.2, 6.3]],
+    ball: [-4.6, 5.0],
+    // A cut as the ball rises from the bottom of its swing throws it through the gap between the
+    // walls into the basket behind (won 1.1-1.7 s).
+    basket: [2.55, 0],
+    basketWidth: 2.5,
+    basketDepth: 0.75,
+    stars: [
+      [0.75, 3.7],
+      [1.25, 3.2],
+      [1.55, 2.6],
+    ],
+    blocks: [
+      { at: [0.8, 1.0], half: [0.12, 1.0] },
+      { at: [0.8, 5.7], half: [0.12, 0.7] },
+    ],
+    view: WIDE_VIEW,
+    room: WIDE_ROOM_HALF_WIDTH,
+  },
+  {
+    name: 'Off the wall',
+    hint: LEVELS[7]!.hint,
+    anchors: [[-0.5, 6.3]],
+    ball: [-3.5, 5.3],
+    // A cut as the ball swings up to the right throws it over the tall wall at the room's right
+    // wall, and it drops off it into the basket between the two (won 1.3-1.9 s).
+    basket: [4.2, 0],
+    basketWidth: 1.8,
+    basketDepth: 0.75,
+    stars: [
+      [3.95, 3.05],
+      [4.4, 2.3],
+      [4.55, 1.3],
+    ],
+    blocks: [{ at: [3.0, 1.2], half: [0.12, 1.2] }],
     view: WIDE_VIEW,
     room: WIDE_ROOM_HALF_WIDTH,
   },
@@ -375,10 +496,35 @@ export function predictFlight(
       py < r ||
       Math.abs(px) > room - r ||
       (Math.abs(px - bx) < half + WALL + r && py < by + level.basketDepth + r && !opening) ||
-      (level.blocks ?? []).some((b) => Math.abs(px - b.at[0]) < b.half[0] + r && Math.abs(py - b.at[1]) < b.half[1] + r);
+      (level.blocks ?? []).some((b) => {
+        // The ball against the block's box: the distance from its centre to the box, round corners too.
+        const dx = Math.max(0, Math.abs(px - b.at[0]) - b.half[0]),
+          dy = Math.max(0, Math.abs(py - b.at[1]) - b.half[1]);
+        return dx * dx + dy * dy < r * r;
+      });
     out.push(px, py);
     if (opening) return true;
     if (hit) return false;
+  }
+  return false;
+}
+
+/**
+ * Whether the path `path` (x, y pairs, m; predictFlight's) passes within STAR_REACH of the point
+ * (sx, sy): measured to each straight piece between its points, not to the points alone (sampled
+ * every 0.04 s, a throw's points lie 0.2 m apart).
+ */
+export function pathReaches(path: readonly number[], sx: number, sy: number): boolean {
+  for (let i = 0; i + 1 < path.length; i += 2) {
+    const ax = path[i]!,
+      ay = path[i + 1]!;
+    const bx = i + 3 < path.length ? path[i + 2]! : ax,
+      by = i + 3 < path.length ? path[i + 3]! : ay;
+    const dx = bx - ax,
+      dy = by - ay,
+      l2 = dx * dx + dy * dy;
+    const u = l2 > 0 ? Math.max(0, Math.min(1, ((sx - ax) * dx + (sy - ay) * dy) / l2)) : 0;
+    if (Math.hypot(ax + u * dx - sx, ay + u * dy - sy) < STAR_REACH) return true;
   }
   return false;
 }
@@ -436,7 +582,7 @@ export interface RopeScene {
 export function createRopeScene(index: number, p: RopeSceneParams, levels: readonly Level[] = LEVELS): RopeScene {
   const level = levels[index];
   if (!level) throw new RangeError(`createRopeScene: level must be an integer in [0, ${levels.length - 1}], got ${index}`);
-  const world = createPhysicsWorld({ gravity: [0, -p.gravity], capacity: 2000 });
+  const world = createPhysicsWorld({ gravity: [0, -p.gravity * (level.gravityScale ?? 1)], capacity: 2000 });
   addBox(world, { position: [0, -0.25], halfExtents: [20, 0.25], static: true, friction: 0.6 });
   // The room's side walls: their inner faces at x = -room and +room.
   const room = roomHalfWidth(level);

@@ -124,7 +124,8 @@ export class RopeView {
   /**
    * Draws `level` with its ropes and ball at interpolation factor `alpha`; `caught` says which stars
    * are gone, `time` (s) turns the stars. `W` x `H` is the canvas, px. `caughtAt` (s, on `time`'s
-   * clock; NaN while not caught) times each caught star's pop (STAR_POP_S).
+   * clock; NaN while not caught) times each caught star's pop (STAR_POP_S). A star `lit` (the cue
+   * to cut: a cut now would fly the ball through it) glows bright in a pulsing ring.
    */
   update(
     world: PhysicsWorld,
@@ -138,6 +139,7 @@ export class RopeView {
     W: number,
     H: number,
     caughtAt: readonly number[] = [],
+    lit: readonly boolean[] = [],
   ): void {
     const key = `${level.name}:${W}x${H}:${cam.toScreenX(0).toFixed(2)},${cam.toScreenY(0).toFixed(2)},${cam.toScreenLength(1).toFixed(4)}`;
     if (key !== this.roomKey) {
@@ -220,6 +222,13 @@ export class RopeView {
         R *= 1 + u;
         a0 += 4 * u;
         opacity = 1 - u * u;
+      } else if (lit[i]) {
+        // Lit: a bright halo and a ring that beats, seen from across the room.
+        const beat = 0.5 + 0.5 * Math.sin(8 * time);
+        f.circle(x, y, R * 1.6).fill({ color: 0xffe27a, alpha: 0.22 });
+        f.circle(x, y, R * (1.9 + 0.3 * beat)).stroke({ width: Math.max(3, R * 0.28), color: 0xffd23f, alpha: 0.95 });
+        f.circle(x, y, R * (2.5 + 0.5 * beat)).stroke({ width: Math.max(2, R * 0.12), color: 0xffe27a, alpha: 0.5 * (1 - beat) });
+        R *= 1.25;
       } else f.circle(x, y, R * 1.6).fill({ color: 0xffe27a, alpha: 0.18 });
       const pts: number[] = [];
       for (let k = 0; k < 10; k++) {
@@ -336,6 +345,22 @@ export class RopeView {
     // Wallpaper stripes.
     const room = roomHalfWidth(level);
     for (let x = -room - 1.5; x <= room + 1.5; x += 0.5) g.rect(X(x), 0, Math.max(1, S(0.16)), H).fill({ color: 0xffffff, alpha: 0.035 });
+    // A level on the Moon (low gravity): a large pale moon, its craters, on the wallpaper's top
+    // right, under the beam, so the level does not look like any other.
+    if ((level.gravityScale ?? 1) < 0.5) {
+      const top = Math.max(...level.anchors.map((a) => a[1]));
+      const mx = X(room - 0.75),
+        my = Y(top - 0.75),
+        mr = S(0.45);
+      g.circle(mx, my, mr * 1.5).fill({ color: 0xf3ecc8, alpha: 0.08 });
+      g.circle(mx, my, mr).fill({ color: 0xe8e1bd, alpha: 0.55 });
+      for (const [cx, cy, cr] of [
+        [-0.3, -0.2, 0.22],
+        [0.35, 0.15, 0.16],
+        [-0.05, 0.45, 0.12],
+      ] as const)
+        g.circle(mx + cx * mr, my + cy * mr, cr * mr).fill({ color: 0xb9b294, alpha: 0.45 });
+    }
     // The floor: boards.
     const floor = Y(0);
     g.rect(0, floor, W, H - floor).fill({ color: 0x6b4a2f });
