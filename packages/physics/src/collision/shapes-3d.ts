@@ -177,6 +177,22 @@ function colliderRotation(s: Shape3DStore, e: number, isBall: boolean, R: Float6
     R[o + M22] = 1;
     return;
   }
+  const px = s.px[e]!,
+    py = s.py[e]!,
+    pz = s.pz[e]!,
+    qx = s.qx[e]!,
+    qy = s.qy[e]!,
+    qz = s.qz[e]!,
+    qw = s.qw[e]!;
+  if (px === 0 && py === 0 && pz === 0 && qx === 0 && qy === 0 && qz === 0 && qw === 1) {
+    // A shape placed at its body's centre, unturned (a pile's boxes): the body's own rotation, no
+    // offset; the composition below would return the same numbers (up to the sign of a zero).
+    shapeShift[0] = 0;
+    shapeShift[1] = 0;
+    shapeShift[2] = 0;
+    rotationMatrix(bodyQ[0]!, bodyQ[1]!, bodyQ[2]!, bodyQ[3]!, R, o);
+    return;
+  }
   // Shape pose: body pose composed with the placement.
   shapeShift[0] = s.px[e]!;
   shapeShift[1] = s.py[e]!;
