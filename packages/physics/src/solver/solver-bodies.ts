@@ -65,8 +65,11 @@ function joinRange(
     for (let side = 0; side < 2; side++) {
       const e = side === 0 ? A[i]! : B[i]!;
       const t = type[e]!;
+      // Both comparisons for every body (bits, not a short-circuit): a pile's bodies are all dynamic until
+      // the first sleeps, and code compiled before then without the second was thrown away at that step.
+      const moving = +(t === BodyType.Dynamic) | +(t === BodyType.Kinematic);
       let k = 0;
-      if (e !== 0 && (t === BodyType.Dynamic || t === BodyType.Kinematic)) {
+      if (e !== 0 && moving === 1) {
         if (mark[e] !== stamp) {
           mark[e] = stamp;
           index[e] = count;
