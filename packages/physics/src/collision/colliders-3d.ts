@@ -23,16 +23,14 @@ export function queueWake(e: number): void {
   wakes.list[wakes.count++] = e;
 }
 
-/**
- * Whether a pair of body types is collided: one is dynamic, or a kinematic body meets a sleeping one (to
- * wake it). Every comparison is made for every pair (bits, not short-circuits): a pile's pairs are all
- * dynamic until its first body sleeps, and code compiled before then without the other comparisons was
- * thrown away at that step.
- */
+/** Whether a pair of body types is collided: one is dynamic, or a kinematic body meets a sleeping one (to wake it). */
 export function meets(ta: number, tb: number): boolean {
-  const k = +(ta === BodyType.Kinematic) & +(tb === BodyType.Sleeping),
-    s = +(ta === BodyType.Sleeping) & +(tb === BodyType.Kinematic);
-  return (+(ta === BodyType.Dynamic) | +(tb === BodyType.Dynamic) | k | s) === 1;
+  return (
+    ta === BodyType.Dynamic ||
+    tb === BodyType.Dynamic ||
+    (ta === BodyType.Kinematic && tb === BodyType.Sleeping) ||
+    (ta === BodyType.Sleeping && tb === BodyType.Kinematic)
+  );
 }
 
 /** The layout of a collider's entry in `scratch.material` (collider n at STRIDE n). */
