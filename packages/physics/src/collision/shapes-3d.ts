@@ -49,13 +49,14 @@ export function shape3DCollisionSystem(world: PhysicsWorld): void {
   st.previous = st.current;
   st.current = prev;
   st.current.count = 0;
-  const index = st.previousIndex,
-    p = st.previous;
-  clearRowIndex(index, p.count);
-  for (let i = 0; i < p.count; i++) insertRow(index, rowKey(world.capacity, p.shapeA[i]!, p.shapeB[i]!, p.sub[i]!), i);
+  indexPreviousRows(st, world.capacity);
   // A sleeping island met by a moving body wakes; then the step's pairs are found again with it awake.
   for (let pass = 0; ; pass++) {
-    gather(world, s);
+    const posed = gather(world, s);
+    if (posed >= 0) {
+      scratch.n = posed;
+      ownPoses(s, scratch.spec);
+    }
     // Room for the rows up front (two a collider, and as many as last step's buffer held): growing by
     // doubling while the rows are written cost a pile's first steps a dozen copies of every array.
     const rows = Math.max(2 * scratch.n, st.previous.bodyA.length);
@@ -74,10 +75,33 @@ export function shape3DCollisionSystem(world: PhysicsWorld): void {
   // The contact count of the step's statistics: the ball contacts of this step (their buffer, which the
   // balls' narrowphase refills earlier in the collide stage and which stays empty in a world without
   // it) and the 3D shape contact points (solver rows).
-  let points = 0;
-  for (let i = 0, b = st.current; i < b.count; i++) points += b.points[i]!;
-  world.collision.stats.contacts = world.collision.contacts.count + points;
+  world.collision.stats.contacts = world.collision.contacts.count + rowPoints(st.current);
   sensorEvents(world, st);
+}
+
+/*
+ * The loops of the collide step are each the last thing in a function of its own (gather's too: it
+ * returns the colliders it posed and the system notes them): V8 compiles a long loop on the stack (OSR)
+ * while it runs interpreted, and that code, entered again at the loop of every later call, was thrown
+ * away each time at the first operation past the loop it had no type feedback for. Traced on
+ * box-pile-3d 5,000 with the rows' loops in shape3DCollisionSystem: once in about 10 runs its code
+ * deoptimised every step from the first wake on (81 times in 90 steps), and with those loops moved out
+ * but gather's notes after its loop, gather did so every step (200 in 200).
+ */
+
+/** Indexes last step's rows (st.previous) by their key, for the warm start and the reuse of this step's pairs. */
+function indexPreviousRows(st: Contact3DState, capacity: number): void {
+  const index = st.previousIndex,
+    p = st.previous;
+  clearRowIndex(index, p.count);
+  for (let i = 0; i < p.count; i++) insertRow(index, rowKey(capacity, p.shapeA[i]!, p.shapeB[i]!, p.sub[i]!), i);
+}
+
+/** The contact points of the rows of `b`. */
+function rowPoints(b: Contact3DState['current']): number {
+  let points = 0;
+  for (let i = 0; i < b.count; i++) points += b.points[i]!;
+  return points;
 }
 
 /** Sensor events: overlaps found this step against those of the last. */
@@ -177,6 +201,22 @@ function colliderRotation(s: Shape3DStore, e: number, isBall: boolean, R: Float6
     R[o + M22] = 1;
     return;
   }
+  const px = s.px[e]!,
+    py = s.py[e]!,
+    pz = s.pz[e]!,
+    qx = s.qx[e]!,
+    qy = s.qy[e]!,
+    qz = s.qz[e]!,
+    qw = s.qw[e]!;
+  if (px === 0 && py === 0 && pz === 0 && qx === 0 && qy === 0 && qz === 0 && qw === 1) {
+    // A shape placed at its body's centre, unturned (a pile's boxes): the body's own rotation, no
+    // offset; the composition below would return the same numbers (up to the sign of a zero).
+    shapeShift[0] = 0;
+    shapeShift[1] = 0;
+    shapeShift[2] = 0;
+    rotationMatrix(bodyQ[0]!, bodyQ[1]!, bodyQ[2]!, bodyQ[3]!, R, o);
+    return;
+  }
   // Shape pose: body pose composed with the placement.
   shapeShift[0] = s.px[e]!;
   shapeShift[1] = s.py[e]!;
@@ -190,8 +230,12 @@ function colliderRotation(s: Shape3DStore, e: number, isBall: boolean, R: Float6
   rotationMatrix(shapeQ[0]!, shapeQ[1]!, shapeQ[2]!, shapeQ[3]!, R, o);
 }
 
-/** Classifies the bodies, writes each collider's start-of-step pose and fattened box. */
-function gather(world: PhysicsWorld, s: Shape3DStore): void {
+/**
+ * Classifies the bodies, writes each collider's start-of-step pose and fattened box; returns how many it
+ * posed (the caller notes them: scratch.n, ownPoses), or -1 when none is moving (scratch.n is then 0 and
+ * nothing is posed).
+ */
+function gather(world: PhysicsWorld, s: Shape3DStore): number {
   const stamp = markClasses(world);
   lookUpBodyBits(world);
   if (scratch.colliderOf.length < world.capacity + 1) {
@@ -216,7 +260,7 @@ function gather(world: PhysicsWorld, s: Shape3DStore): void {
   // kinematic body), so none is posed (posing would be most of a sleeping pile's step).
   if (!anyMoving(s, balls, cap, stamp)) {
     scratch.n = 0;
-    return;
+    return -1;
   }
   // Every 3D shape in slot order, then every shapeless ball: collider k's pose and fattened box at
   // scratch index n (a loop, not a closure called per collider: n and the step's constants stay in
@@ -261,8 +305,7 @@ function gather(world: PhysicsWorld, s: Shape3DStore): void {
     mat[mo + ColliderMaterial.PERMISSIVE] = !isBall && s.group[e] === 0 && s.mask[e] === 0xffffffff && s.category[e] !== 0 ? 1 : 0;
     n++;
   }
-  scratch.n = n;
-  ownPoses(s, spec);
+  return n;
 }
 
 /**

@@ -65,8 +65,11 @@ function joinRange(
     for (let side = 0; side < 2; side++) {
       const e = side === 0 ? A[i]! : B[i]!;
       const t = type[e]!;
+      // Dynamic (0) or kinematic (1) in one comparison: with two, a short-circuit left the second without
+      // type feedback while a pile's bodies were all dynamic, and the code compiled then was thrown away
+      // when the first slept.
       let k = 0;
-      if (e !== 0 && (t === BodyType.Dynamic || t === BodyType.Kinematic)) {
+      if (e !== 0 && t <= BodyType.Kinematic) {
         if (mark[e] !== stamp) {
           mark[e] = stamp;
           index[e] = count;

@@ -501,7 +501,9 @@ function restingPairs(world: PhysicsWorld, s: Shape3DStore, st: Contact3DState):
     if (ea > cap || eb > cap || colliderStamp[ea] !== colliderPass || colliderStamp[eb] !== colliderPass) continue;
     const i = colliderOf[ea]!,
       j = colliderOf[eb]!;
-    if (searching[i] === 1 || searching[j] === 1 || order[i] === -1 || order[j] === -1) continue;
+    // Every test for every row (bits, not short-circuits): the rows of a pile all have a searching collider
+    // until its first body rests, and code compiled before then without the other tests was thrown away.
+    if ((searching[i]! | searching[j]! | +(order[i] === -1) | +(order[j] === -1)) !== 0) continue;
     if (!boxesOverlap(i, j)) continue;
     if (!meets(type[sc.body[i]!]!, type[sc.body[j]!]!)) continue;
     pair(world, s, st, i, j);
