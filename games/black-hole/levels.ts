@@ -306,8 +306,12 @@ const WALL_FILL_GAP = 0.4;
  * do: test/games/black-hole-curve.test.ts); level 4 four holes, one across the straight path up and one on each diagonal, small
  * (horizons 0.5 to 0.7 m, so it is no wall after level 3: a hole's pull matches the thrust within sqrt(c^2 r / (2 a)) of its centre,
  * which grows with r, so with level 1's 0.6 m holes grown to 1.1 m steering would lose to the pull on
- * level 4); level 5 a second hole across the path, the holes no bigger; from level 6 the holes
- * grow again step by step (to 1, 1.1, 1.2 m) and drift, slowly at first (0.35, then 0.6, 0.8 m/s),
+ * level 4); level 5 a second hole across the path, the holes no bigger; level 6 sets level 5's holes
+ * drifting, slowly (0.2 m/s), with one of them across the path (four bigger ones at 0.35 m/s, two
+ * across, made level 6 a cliff: the middle player's success 0.34 after level 5's 0.81 on the
+ * desktop's field, 0.44 after 0.85 on the phone's; now 0.74 and 0.76, seeds 1-12 of
+ * `node scripts/black-hole-curve.mjs`); from level 7 two lie across it again and the holes grow step
+ * by step (to 1, 1.2 m) and drift faster (0.5, then 0.8 m/s),
  * all but the first hole across the path (`anchored`: it stays put, in the smallest quarter of the radii);
  * from level 8 the fuel is limited (18 s, then 15 s down to 5 s); from level 9 a fifth hole, then a
  * hole more every second level (up to MAX_HOLES), bigger (radius up to 2 m) and faster (up to 3 m/s).
@@ -363,9 +367,9 @@ export function levelSpec(level: number): LevelSpec {
     case 5:
       return spec(4, [0.45, 0.85], 0, 2, 0, Infinity);
     case 6:
-      return spec(4, [0.55, 1], 0, 2, 0.35, Infinity);
+      return spec(4, [0.45, 0.85], 0, 1, 0.2, Infinity);
     case 7:
-      return spec(4, [0.6, 1.1], 0, 2, 0.6, Infinity);
+      return spec(4, [0.55, 1], 0, 2, 0.5, Infinity);
     case 8:
       return spec(4, [0.6, 1.2], 0, 2, 0.8, 18);
     default: {

@@ -19,7 +19,9 @@
  * baskets, throws and longest streak, and R or the Play-again button starts a new round. The status
  * row above the box says the goal and shows points, the next basket's multiplier, time and best.
  *
- * Input: a click drops a ball at the pointer, and a pull throws one slingshot-style from where the
+ * Input: a finger's quick flick up throws the way it flicks, faster the quicker (flick.ts: read from
+ * the pointer events' own times, so a flick throws at 10 frames a second as at 60; flickRelease), and
+ * a press on the frame round the box counts as one just inside it (pressInBox). A click drops a ball at the pointer, and a pull throws one slingshot-style from where the
  * press began, on a ball or not; a pull from under the floor (the court's stand) throws the top ball
  * of the heap over it (columnTop; opposite to
  * the pull, faster the longer it is, hoop.ts slingVelocity: the height it reaches grows evenly over
@@ -92,6 +94,7 @@ import {
 import { Graphics, Text } from 'pixi.js';
 import { assistAim } from './aim-assist';
 import { pageStorage, readBest, writeBest } from './best';
+import { FlickTracker, flickPull } from './flick';
 import {
   addHoop,
   assistPull,
@@ -131,7 +134,7 @@ import {
 } from './hoop';
 import { createKnockLimiter, KNOCK_LIMITS } from './knocks';
 import { drawFloor, drawGlint, drawShadow, drawWall, shadeBallTexture } from './looks';
-import { ringInside } from './pull-fit';
+import { pressInBox, ringInside } from './pull-fit';
 import {
   applyDrag,
   applyGravity,
@@ -1017,6 +1020,7 @@ const game = await startPixiGame({
       ? // The phone's card (under the floor, game-kit's touch hint) has a line for each: short ones.
         [
           { keys: 'Drag', action: 'pull back, let go: throw (from a ball: that ball)' },
+          { keys: 'Flick', touch: 'Flick', action: 'up at the hoop: throw' },
           { keys: 'Click', action: 'drop a ball' },
           { keys: 'Hold', touch: 'Hold', action: 'still 1 s on a ball: carry it' },
         ]
@@ -1609,9 +1613,10 @@ canvas.addEventListener('pointerdown', (event) => {
   // covers the box): no new throw, no pick-up.
   if (lastCall.aiming || lastCall.ball !== 0 || round.phase === 'over') return;
   const [px, py] = local(event);
-  const wx = renderer.camera.toWorldX(px),
-    wy = renderer.camera.toWorldY(py);
   const { box } = layoutOf(TALL);
+  // A press on the frame beside or over the box is taken as one just inside it, so a press anywhere
+  // on the play area starts an aim (one on the steel frame did nothing).
+  const [wx, wy] = pressInBox(renderer.camera.toWorldX(px), renderer.camera.toWorldY(py), box.min, box.max);
   // Under the floor (the stand, room to pull back into): the press throws the top ball of the heap
   // over it, or a new basketball from the floor there when the heap is empty.
   const stand = wy < box.min[1];
@@ -1643,6 +1648,7 @@ canvas.addEventListener('pointerdown', (event) => {
   pressFinger = event.pointerType === 'touch';
   fullPullNow = pressFinger ? fingerFullPull() : fullPull();
   holdStart = performance.now();
+  flick.press(px, py, event.timeStamp);
   clearTimeout(holdTimer);
   const { clientX, clientY, pointerId: id, pointerType, timeStamp } = event;
   holdTimer = window.setTimeout(() => {
@@ -1694,6 +1700,8 @@ function bodyUnder(x: number, y: number): boolean {
 
 canvas.addEventListener('pointermove', (event) => {
   if (event.pointerId !== pointerId) return;
+  // Each move a slow page handed over at once, with its own time, for the release's flick speed.
+  for (const e of event.getCoalescedEvents?.() ?? [event]) flick.move(...local(e), e.timeStamp);
   [lastX, lastY] = local(event);
   if (Math.hypot(lastX - startX, lastY - startY) > slop) dragged = true;
   // A finger above the pull's anchor would throw down, never a basket: the anchor follows it there,
@@ -1716,6 +1724,7 @@ function release(event: PointerEvent, cancelled: boolean): void {
   if (cancelled) return;
   [lastX, lastY] = local(event);
   if (Math.hypot(lastX - startX, lastY - startY) > slop) dragged = true;
+  flickRelease(event);
   const t = currentThrow();
   const ball = pressBall;
   const cancel = inCancelZone();
@@ -1752,6 +1761,27 @@ function release(event: PointerEvent, cancelled: boolean): void {
     if (last) lastCall.ball = e;
   }
 }
+/** The current press's pointer samples (event times), for the speed of a finger's flick as it lets go. */
+const flick = new FlickTracker();
+
+/**
+ * A finger let go in a flick up (flick.ts: its speed read from the events' own times, so a slow
+ * page's flick throws as a fast one's): when the pull itself would throw nothing (not pulled, or back
+ * in the cancel zone, as a finger sliding up drags the anchor along) or down (pulled up from the
+ * stand), the pull is set to the flick's (flickPull): the ball goes the way the finger flicked,
+ * faster the quicker the flick, and the aim assist draws it to a basket as it does a pull.
+ */
+function flickRelease(event: PointerEvent): void {
+  if (!pressFinger) return;
+  const [vx, vy] = flick.release(lastX, lastY, event.timeStamp);
+  if (dragged && !inCancelZone() && lastY >= startY) return;
+  const pull = flickPull(vx, vy, fullPullNow);
+  if (!pull) return;
+  lastX = startX + pull[0];
+  lastY = startY + pull[1];
+  dragged = true;
+}
+
 /** Whether the last drawn aiming label said "blocked", and the pointer's spot then (CSS px on the canvas). */
 let shownBlocked = { blocked: false, x: Number.NaN, y: Number.NaN };
 /** When a release was refused because a ball was in the way at once (performance.now() ms; its hint shows HOOP_TAP_SHOWN ms), or -Infinity. */

@@ -35,6 +35,14 @@ describe('black hole difficulty curve', () => {
       expect(figures[i - 1]!.success - figures[i]!.success, `level ${figures[i]!.level}: ${show(figures)}`).toBeLessThan(0.3);
   });
 
+  test("level 6, where the holes start to drift, is no cliff after level 5: on the phone's field the middle player's success falls by under 0.2", () => {
+    // Level 6 drifted four bigger holes (0.55 to 1 m): success 0.42 on these seeds (0.44 over 12) after
+    // level 5's 1.0 (0.85 over 12). Now three of level 5's holes drift: 1.0 (0.94 over 12). Seeds 1-4 on
+    // the 20 x 30 m field to stay cheap; 0.2 is about the step between earlier levels over 12 seeds.
+    const figures = [5, 6].map((level) => levelFigures(level, PLAYERS.middle, 4, 60, { width: 20, height: 30 }));
+    expect(figures[0]!.success - figures[1]!.success, show(figures)).toBeLessThan(0.2);
+  });
+
   test('a player who reacts later falls more: the slow player takes more tries than the sharp one on level 4', () => {
     // The players' skill shows in the measure (else the curves above could not tell levels apart).
     const tries = (style: (typeof PLAYERS)[keyof typeof PLAYERS]): number =>
