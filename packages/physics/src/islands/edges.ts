@@ -98,11 +98,10 @@ export function setJointEdges3D(add: (world: PhysicsWorld, e: IslandEdges) => vo
  */
 export function addIslandEdges(world: PhysicsWorld, e: IslandEdges): void {
   const F = EdgeFlag;
-  const rows = world.collision.cache.rows;
-  for (let i = 0; i < rows.count; i++) {
-    if (rows.normalImpulse[i]! <= 0) continue;
-    addIslandEdge(e, rows.a[i]!, rows.b[i]!, rows.kind[i] === 0 ? F.SUPPORTS | F.JOINS : F.SUPPORTS);
-  }
+  // Each long loop is a function of its own that ends with it: V8 compiles such a loop on the stack
+  // (OSR) and enters that code at the loop in later calls; an operation past the loop that it has no
+  // type feedback for would throw it away there, call after call.
+  addRowEdges(e, world.collision.cache.rows);
   if (world.dimensions === 3) {
     const m = contact3DStateOf(world)?.current;
     if (m !== undefined) addManifoldEdges(e, m.bodyA, m.bodyB, m.points, m.carried, 4, m.count);
@@ -120,6 +119,15 @@ export function addIslandEdges(world: PhysicsWorld, e: IslandEdges): void {
     const j = joints[i]!;
     const flags = F.JOINT | (J.force[j]! > 0 ? F.SUPPORTS : 0) | (J.type[j] === JointType.Mouse ? F.MOUSE : 0);
     addIslandEdge(e, J.a[j]!, J.b[j]!, flags);
+  }
+}
+
+/** Adds the edge of each ball contact row that carried a normal impulse (joining unless a ball meets static geometry: kind 0 joins). */
+function addRowEdges(e: IslandEdges, rows: PhysicsWorld['collision']['cache']['rows']): void {
+  const F = EdgeFlag;
+  for (let i = 0; i < rows.count; i++) {
+    if (rows.normalImpulse[i]! <= 0) continue;
+    addIslandEdge(e, rows.a[i]!, rows.b[i]!, rows.kind[i] === 0 ? F.SUPPORTS | F.JOINS : F.SUPPORTS);
   }
 }
 
@@ -258,13 +266,11 @@ export function joinJointEdges(
   member: Uint32Array,
   stamp: number,
 ): number[] | null {
+  if (!hasJointEdge(e)) return null;
+  markMembers(member, bodies, stamp);
   const A = e.a,
     B = e.b,
     flags = e.flags;
-  let any = false;
-  for (let i = 0; i < e.count && !any; i++) any = (flags[i]! & EdgeFlag.JOINT) !== 0;
-  if (!any) return null;
-  for (let i = 0; i < bodies.length; i++) member[bodies[i]!] = stamp;
   const c = world.components;
   let wake: number[] | null = null;
   for (let i = 0; i < e.count; i++) {
@@ -294,4 +300,17 @@ export function joinJointEdges(
     }
   }
   return wake;
+}
+
+/** Whether some edge of `e` is a joint's (`JOINT`). Its loop ends the function (see addIslandEdges). */
+function hasJointEdge(e: IslandEdges): boolean {
+  const flags = e.flags;
+  let any = false;
+  for (let i = 0; i < e.count && !any; i++) any = (flags[i]! & EdgeFlag.JOINT) !== 0;
+  return any;
+}
+
+/** member[x] = stamp for each x of `bodies`. */
+function markMembers(member: Uint32Array, bodies: ArrayLike<number>, stamp: number): void {
+  for (let i = 0; i < bodies.length; i++) member[bodies[i]!] = stamp;
 }

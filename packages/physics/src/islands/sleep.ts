@@ -1,6 +1,7 @@
 import { addComponent, hasComponent, removeComponent } from 'bitecs';
 import { keepSleepingManifolds } from '../collision/dormant-manifolds-2d.js';
 import { contact3DStateOf } from '../collision/manifolds-3d.js';
+import type { SleepState } from '../collision/state.js';
 import { shapes3DOf } from '../shapes/store-3d.js';
 import { ecsOf } from '../world/ecs-internals.js';
 import { resolveKind } from '../world/handles.js';
@@ -119,15 +120,23 @@ export function wakeSystem(world: PhysicsWorld): void {
     sl.anyAsleep = false;
     return;
   }
-  const vx = c.Velocity.x,
-    vy = c.Velocity.y,
-    vz = c.Velocity.z;
+  // The loop is a function of its own (see sleepSystem): the wake that first follows it comes long
+  // after its code was compiled.
+  wakeIslandsOf(world, movedSleepers(world, asleep));
+}
+
+/** The bodies of `asleep` whose velocity is not zero, or null when there is none. */
+function movedSleepers(world: PhysicsWorld, asleep: ArrayLike<number>): number[] | null {
+  const V = world.components.Velocity;
+  const vx = V.x,
+    vy = V.y,
+    vz = V.z;
   let woken: number[] | null = null;
   for (let i = 0; i < asleep.length; i++) {
     const e = asleep[i]!;
     if (vx[e] !== 0 || vy[e] !== 0 || vz[e] !== 0) (woken ??= []).push(e);
   }
-  if (woken) for (const e of woken) wakeIsland(world, e);
+  return woken;
 }
 
 /** Wakes the island of every body in `list` (none when null). */
@@ -172,22 +181,71 @@ export function makeSleepQueries(world: PhysicsWorld): void {
  * Stage 7: updates rest times and puts resting islands to sleep. Islands come from this step's
  * contacts between two dynamic bodies that carried a normal impulse; contacts with static geometry do
  * not join islands (a floor does not tie every pile together).
+ *
+ * Every loop over the bodies or edges is a function of its own that ends with its loop, and this one
+ * has none: V8 compiles a long loop on the stack (OSR) while its function still runs interpreted, enters
+ * that code at the loop in every later call, and throws it away at the first operation past the loop
+ * that it has no type feedback for (here, the first island to fall asleep); the function then ran
+ * interpreted, step after step.
  * @category Collision
  */
 export function sleepSystem(world: PhysicsWorld): void {
   const cs = world.collision;
   const sl = cs.sleep;
-  const c = world.components;
   if (!sl.enabled) {
     cs.stats.sleeping = 0;
     return;
   }
   const terms = sleepTerms(world);
   const bodies = sleepCandidates(world, terms);
-  const n = bodies.length;
+  const rest = sl.restTime,
+    parent = sl.parent;
+  // Sleepers a resting body leaned on: woken for the next step (islands/edges.ts pushedSleepers2D).
+  if (world.dimensions === 2) wakeIslandsOf(world, pushedSleepers2D(world));
+  // The island graph of this step: every contact and joint, from every store (islands/edges.ts).
+  const edges = emptyIslandEdges();
+  addIslandEdges(world, edges);
+  // Support: a body rests only while some contact or joint pushed it this step.
+  const stamp = ++sl.stamp;
+  markSupport(edges, sl.supported, stamp);
+  updateRestTimes(world, bodies, stamp);
+  // Bodies that must stay awake: time-varying forces, springs.
+  for (let k = 0; k < terms.awake.length; k++) zeroRestTimes(rest, query(world, terms.awake[k]!));
+  zeroSpringRestTimes(world, query(world, terms.spring));
+  // Islands over contacts between dynamic awake bodies that pushed, and over joints (`supported` is
+  // read no more this step, and marks the candidates). Found at every step, also while no body has
+  // rested timeToSleep yet (a pile still settling): a branch first taken when the first body has
+  // rested that long would run uncompiled code for the rest of the settling, every step.
+  joinContactEdges(world, edges, parent);
+  wakeIslandsOf(world, joinJointEdges(world, edges, bodies, rest, parent, sl.supported, ++sl.stamp));
+  // An island sleeps when every body in it has rested timeToSleep: its least rest time.
+  fillAt(sl.islandRest, bodies, Infinity);
+  leastRestAtRoots(sl, bodies);
+  // Each body's island (its root) kept for fallAsleep, which runs after the parents are reset.
+  if (roots.length < bodies.length) roots = new Int32Array(Math.max(bodies.length, 2 * roots.length));
+  const sleepers = islandRoots(sl, bodies, roots);
+  // Every body its own island again between steps: a snapshot stores such parents in a few bytes.
+  resetParents(parent, bodies);
+  resetJoinedParents(edges, parent);
+  const asleep = query(world, terms.sleeping).length;
+  cs.stats.sleeping = sl.anyAsleep ? asleep : 0;
+  if (sleepers > 0) cs.stats.sleeping = fallAsleep(world, bodies, roots, terms);
+}
+
+/** sleepSystem's scratch: the root of each candidate's island this step, in candidate order. */
+let roots = new Int32Array(0);
+
+/**
+ * Updates the rest time of each of `bodies`: it grows by dt while the body moves slower than
+ * `linearSpeed`, spins slower than `angularSpeed` and was supported this step (`supported` is `stamp`),
+ * else is 0; and makes each its own union-find root (parent[e] = e).
+ */
+function updateRestTimes(world: PhysicsWorld, bodies: Uint32Array, stamp: number): void {
+  const sl = world.collision.sleep;
+  const c = world.components;
   const rest = sl.restTime,
     parent = sl.parent,
-    islandRest = sl.islandRest;
+    supported = sl.supported;
   const vx = c.Velocity.x,
     vy = c.Velocity.y,
     vz = c.Velocity.z;
@@ -197,85 +255,99 @@ export function sleepSystem(world: PhysicsWorld): void {
   const lin2 = sl.linearSpeed * sl.linearSpeed,
     ang2 = sl.angularSpeed * sl.angularSpeed;
   const dt = world.dt;
-  // Sleepers a resting body leaned on: woken for the next step (islands/edges.ts pushedSleepers2D).
-  if (world.dimensions === 2) wakeIslandsOf(world, pushedSleepers2D(world));
-  // The island graph of this step: every contact and joint, from every store (islands/edges.ts).
-  const edges = emptyIslandEdges();
-  addIslandEdges(world, edges);
-  // Support: a body rests only while some contact or joint pushed it this step.
-  const stamp = ++sl.stamp,
-    supported = sl.supported;
-  markSupport(edges, supported, stamp);
   // Whether a body has AngularVelocity, from bitecs' component masks (what hasComponent reads, without
   // its lookups per body): no entry, no body has it.
   const ecs = ecsOf(world);
   const spin = ecs.componentMap.get(c.AngularVelocity);
   const spinMasks = spin === undefined ? null : ecs.entityMasks[spin.generationId]!,
     spinBit = spin === undefined ? 0 : spin.bitflag;
-  for (let i = 0; i < n; i++) {
+  for (let i = 0; i < bodies.length; i++) {
     const e = bodies[i]!;
     const v2 = vx[e]! * vx[e]! + vy[e]! * vy[e]! + vz[e]! * vz[e]!;
     const w2 = spinMasks !== null && ((spinMasks[e] ?? 0) & spinBit) === spinBit ? wx[e]! * wx[e]! + wy[e]! * wy[e]! + wz[e]! * wz[e]! : 0;
     rest[e] = v2 < lin2 && w2 < ang2 && supported[e] === stamp ? rest[e]! + dt : 0;
     parent[e] = e;
   }
-  // Bodies that must stay awake: time-varying forces, springs.
-  for (let k = 0; k < terms.awake.length; k++) {
-    const ents = query(world, terms.awake[k]!);
-    for (let i = 0; i < ents.length; i++) rest[ents[i]!] = 0;
-  }
-  const springs = query(world, terms.spring);
+}
+
+/** Sets the rest time of every entity of `ents` to 0. */
+function zeroRestTimes(rest: Float64Array, ents: ArrayLike<number>): void {
+  for (let i = 0; i < ents.length; i++) rest[ents[i]!] = 0;
+}
+
+/** Sets the rest time of both bodies of every spring of `springs` to 0. */
+function zeroSpringRestTimes(world: PhysicsWorld, springs: ArrayLike<number>): void {
+  const rest = world.collision.sleep.restTime;
+  const S = world.components.Spring;
   for (let i = 0; i < springs.length; i++) {
     const s = springs[i]!;
-    rest[c.Spring.a[s]!] = 0;
-    rest[c.Spring.b[s]!] = 0;
+    rest[S.a[s]!] = 0;
+    rest[S.b[s]!] = 0;
   }
-  // Islands over contacts between dynamic awake bodies that pushed, and over joints (`supported` is
-  // read no more this step, and marks the candidates). Found at every step, also while no body has
-  // rested timeToSleep yet (a pile still settling): a branch first taken when the first body has
-  // rested that long would run uncompiled code for the rest of the settling, every step.
-  joinContactEdges(world, edges, parent);
-  wakeIslandsOf(world, joinJointEdges(world, edges, bodies, rest, parent, supported, ++sl.stamp));
-  // An island sleeps when every body in it has rested timeToSleep: its least rest time.
-  for (let i = 0; i < n; i++) islandRest[bodies[i]!] = Infinity;
-  for (let i = 0; i < n; i++) {
+}
+
+/** Sets `values[e]` to `x` for each body e of `bodies`. */
+function fillAt(values: Float64Array, bodies: Uint32Array, x: number): void {
+  for (let i = 0; i < bodies.length; i++) values[bodies[i]!] = x;
+}
+
+/**
+ * Lowers `islandRest` of each island's root (in `parent`) to the least rest time of the island's
+ * bodies among `bodies` (the roots' entries start at Infinity).
+ */
+function leastRestAtRoots(sl: SleepState, bodies: Uint32Array): void {
+  const rest = sl.restTime,
+    parent = sl.parent,
+    islandRest = sl.islandRest;
+  for (let i = 0; i < bodies.length; i++) {
     const e = bodies[i]!;
     const r = findRoot(parent, e);
     if (rest[e]! < islandRest[r]!) islandRest[r] = rest[e]!;
   }
-  // Each body's island (its root) kept for fallAsleep, which runs after the parents are reset.
-  const T = sl.timeToSleep;
-  if (roots.length < n) roots = new Int32Array(Math.max(n, 2 * roots.length));
-  const root = roots;
-  let sleepers = 0;
-  for (let i = 0; i < n; i++) {
-    const r = findRoot(parent, bodies[i]!);
-    root[i] = r;
-    sleepers += islandRest[r]! >= T ? 1 : 0;
-  }
-  // Every body its own island again between steps: a snapshot stores such parents in a few bytes.
-  for (let i = 0; i < n; i++) parent[bodies[i]!] = bodies[i]!;
-  resetJoinedParents(edges, parent);
-  // The query is made every step, and the call that first runs when the first island sleeps comes
-  // last: code first run then has no type feedback in this function's optimised code, and V8 throws it
-  // back to the interpreter there; with nothing after it, no loop over the bodies is left interpreted.
-  const asleep = query(world, terms.sleeping).length;
-  cs.stats.sleeping = sl.anyAsleep ? asleep : 0;
-  if (sleepers > 0) cs.stats.sleeping = fallAsleep(world, bodies, root, terms);
 }
 
-/** sleepSystem's scratch: the root of each candidate's island this step, in candidate order. */
-let roots = new Int32Array(0);
+/**
+ * Writes the root of body i's island (of `bodies`) to `out[i]`; returns how many bodies are in an
+ * island that has rested timeToSleep (`islandRest` of its root).
+ */
+function islandRoots(sl: SleepState, bodies: Uint32Array, out: Int32Array): number {
+  const parent = sl.parent,
+    islandRest = sl.islandRest,
+    T = sl.timeToSleep;
+  let sleepers = 0;
+  for (let i = 0; i < bodies.length; i++) {
+    const r = findRoot(parent, bodies[i]!);
+    out[i] = r;
+    sleepers += islandRest[r]! >= T ? 1 : 0;
+  }
+  return sleepers;
+}
+
+/** Makes each of `bodies` its own union-find root (parent[e] = e). */
+function resetParents(parent: Int32Array, bodies: Uint32Array): void {
+  for (let i = 0; i < bodies.length; i++) parent[bodies[i]!] = bodies[i]!;
+}
 
 /**
  * Puts to sleep every body of `bodies` whose island (`roots`, body i's at i: its root in this step's
- * union-find) has rested timeToSleep (`sleep.islandRest` of its root): velocities zeroed, its previous
- * position set to its position, the `Sleeping` tag added, its island recorded for waking; then the 2D
- * shape contacts' impulses are kept for the step they wake in (collision/dormant-manifolds-2d.ts).
- * Returns how many bodies sleep now (the `terms.sleeping` query). A function of its own: it first runs
- * when a pile falls asleep, long after sleepSystem's code was compiled.
+ * union-find) has rested timeToSleep (`sleep.islandRest` of its root), then the 2D shape contacts'
+ * impulses are kept for the step they wake in (collision/dormant-manifolds-2d.ts). Returns how many
+ * bodies sleep now (the `terms.sleeping` query). A function of its own: it first runs when a pile
+ * falls asleep, long after sleepSystem's code was compiled.
  */
-function fallAsleep(world: PhysicsWorld, bodies: ArrayLike<number>, roots: Int32Array, terms: SleepTerms): number {
+function fallAsleep(world: PhysicsWorld, bodies: Uint32Array, roots: Int32Array, terms: SleepTerms): number {
+  putToSleep(world, bodies, roots);
+  world.collision.sleep.anyAsleep = true;
+  if (world.dimensions === 2) keepSleepingManifolds(world);
+  return query(world, terms.sleeping).length;
+}
+
+/**
+ * fallAsleep's loop: each body of `bodies` whose island (root `roots[i]`) has rested timeToSleep gets
+ * velocities zeroed, its previous position set to its position, the `Sleeping` tag, and its island
+ * recorded for waking.
+ */
+function putToSleep(world: PhysicsWorld, bodies: Uint32Array, roots: Int32Array): void {
   const sl = world.collision.sleep;
   const c = world.components;
   const islandRest = sl.islandRest,
@@ -303,9 +375,6 @@ function fallAsleep(world: PhysicsWorld, bodies: ArrayLike<number>, roots: Int32
     O.z[e] = P.z[e]!;
     addComponent(world, e, c.Sleeping);
   }
-  sl.anyAsleep = true;
-  if (world.dimensions === 2) keepSleepingManifolds(world);
-  return query(world, terms.sleeping).length;
 }
 
 /** sleepCandidates' reused list. Scratch, not world state. */
