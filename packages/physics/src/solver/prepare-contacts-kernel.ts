@@ -232,12 +232,12 @@ export function prepareRowWarmStart(A: KernelArray[], P: Float64Array, lo: numbe
     SA[i] = sA;
     SB[i] = sB;
     // The previous row with this key (one at most: a key is one contact): first the guess `next` and,
-    // with a table, the rows a few places either side (next + 1, 2, -2, 3, -3: rows the guess misses
-    // have mostly moved by a few places since the last step), then the hash table. Its row, or -1 if
+    // with a table, the rows up to six places either side (next + 1, 2, -2, 3, -3, ..., 6, -6: rows the
+    // guess misses have mostly moved by a few places since the last step), then the hash table. Its row, or -1 if
     // none or its bodies' stamps differ (a body in its slot was respawned).
     let j = -1,
       known = false;
-    for (let t = 0, tries = size === 0 ? 1 : 6; t < tries; t++) {
+    for (let t = 0, tries = size === 0 ? 1 : 12; t < tries; t++) {
       const q = next + (t < 2 ? t : ((t + 2) >> 1) * (t & 1 ? -1 : 1));
       if (q >= 0 && q < prevCount && pK[q] === kind && pA[q] === a && pB[q] === b && pF[q] === f) {
         j = pSA[q] === sA && pSB[q] === sB ? q : -1;
