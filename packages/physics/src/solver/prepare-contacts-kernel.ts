@@ -231,12 +231,21 @@ export function prepareRowWarmStart(A: KernelArray[], P: Float64Array, lo: numbe
     const sB = stamp[b]!;
     SA[i] = sA;
     SB[i] = sB;
-    let j = next;
-    if (j < prevCount && pK[j] === kind && pA[j] === a && pB[j] === b && pF[j] === f) {
-      j = pSA[j] === sA && pSB[j] === sB ? j : -1;
-    } else if (size === 0) {
-      j = -1;
-    } else {
+    // The previous row with this key (one at most: a key is one contact): first the guess `next` and,
+    // with a table, the rows up to six places either side (next + 1, 2, -2, 3, -3, ..., 6, -6: rows the
+    // guess misses have mostly moved by a few places since the last step), then the hash table. Its row, or -1 if
+    // none or its bodies' stamps differ (a body in its slot was respawned).
+    let j = -1,
+      known = false;
+    for (let t = 0, tries = size === 0 ? 1 : 12; t < tries; t++) {
+      const q = next + (t < 2 ? t : ((t + 2) >> 1) * (t & 1 ? -1 : 1));
+      if (q >= 0 && q < prevCount && pK[q] === kind && pA[q] === a && pB[q] === b && pF[q] === f) {
+        j = pSA[q] === sA && pSB[q] === sB ? q : -1;
+        known = true;
+        break;
+      }
+    }
+    if (!known && size !== 0) {
       let h = Math.imul(a ^ (kind << 28), 0x9e3779b1);
       h ^= Math.imul(b, 0x85ebca77);
       h ^= Math.imul(f, 0xc2b2ae3d);
