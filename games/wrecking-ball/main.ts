@@ -2107,20 +2107,6 @@ function drawSwingPreview(): void {
   hitDrop.position.set(hx, drop / 2, hz);
   hitDrop.scale.set(0.03 * CUE_SCALE, drop, 0.03 * CUE_SCALE);
 }
-/** Cosine of the largest angle between the ball's travel and the camera's line of sight (across the ground) that counts as glancing. */
-const GLANCING_COS = Math.cos((40 * Math.PI) / 180);
-const lookDir = new Vector3();
-/**
- * Whether the swing being aimed sends the ball within 40 degrees of straight away from the camera
- * (a pull toward the camera): the ball then runs along a row of pieces seen end on and meets few
- * of them, and the hint says to aim across the screen.
- */
-function glancing(): boolean {
-  app.camera.getWorldDirection(lookDir);
-  const across = Math.hypot(lookDir.x, lookDir.z);
-  if (across < 1e-6) return false;
-  return (Math.cos(aiming.direction) * lookDir.x + Math.sin(aiming.direction) * lookDir.z) / across > GLANCING_COS;
-}
 /** The piece the last swing was aimed at (marked with a ring and an arrow while the swing runs), or 0. */
 let aimed = 0;
 /**
@@ -2800,6 +2786,7 @@ foldLegend();
 const compactStyle = document.createElement('style');
 compactStyle.textContent =
   '[data-hud="tap-hint"].compact { top: 4px !important; padding: 2px 8px !important; font-size: 12px !important; line-height: 1.25 !important; max-width: 80% !important; border-radius: 10px !important; }' +
+  '[data-hud="tap-hint"].one-line { white-space: nowrap; overflow: hidden; text-overflow: ellipsis; }' +
   // On a desktop the status line (swings left, blocks down) reads at a glance, where the kit's 12 px
   // monospace in its thin bar goes unnoticed; a phone keeps the small type its three lines need. The
   // bar keeps its height (19 px of text + 6 of padding): the scene's framing is measured on it.
@@ -2842,34 +2829,54 @@ const INTRO_FULL = 6;
 function pullWords(): string {
   return `${powerWords(aiming.power)}, ${swingSpeed(aiming.power).toFixed(1)} m/s`;
 }
+/**
+ * Whether the hint says a held drag's aim in one short line: on a phone, where the full sentences
+ * took three lines of large type over the top of the scene the player aims into.
+ */
+function aimInOneLine(): boolean {
+  return touch && SMALL_SCREEN && aimHint(true) !== null;
+}
+/**
+ * The hint while a drag is held (the ball pulled by hand, or a swing being aimed at a piece), or
+ * null with none held; in a few words when `short` (one line of a phone's compact hint), else the
+ * full sentences with the pull's power and speed.
+ */
+function aimHint(short: boolean): string | null {
+  if (drag.body !== 0 && drag.body === handles.ball) {
+    if (swingMeets !== 0) return short ? 'Let go: into the red ring' : 'Let go: the ball swings along the dashes into the red ring';
+    // Swinging over everything: the hook is too high for the ball to pass low.
+    if (swingLow > LOW_SWING + 0.6)
+      return short
+        ? 'Swings high: lower the hook (Down)'
+        : `The ball swings high: lower the hook (${touch ? 'Down' : 'E'}) to swing it low`;
+    return short ? 'Pull so the dashes cross a block' : 'Pull so the bright dashes cross a block, then let go';
+  }
+  if (aiming.piece === 0 || !aiming.dragged || cleared) return null;
+  if (onRun()) return short ? 'Let go: next swing after this one' : 'Let go to aim the next swing: it goes as soon as this one has hit';
+  if (handles.controls.moves.length > 0 && aimed !== 0)
+    return short ? 'Let go to re-aim (no swing used)' : `Winding up… let go to re-aim this swing (no swing used): ${pullWords()}`;
+  // What the swing drawn in 3D shows (drawSwingPreview): a miss, or another structure in the way,
+  // said before the swing is used.
+  if (preview.meet === 0)
+    return short ? 'Would miss: pull another way' : `The ball would miss: its dashes reach no block. Pull another way (${pullWords()})`;
+  if (!sameStructure(preview.meet, aiming.piece))
+    return short
+      ? `Meets ${pieceName(preview.meet)} first (red ring)`
+      : `The ball meets ${pieceName(preview.meet)} first (red ring): let go to hit it, or pull another way`;
+  if (short) return `Let go: ${pullWords()}`;
+  return `Let go: the ball swings along the dashes into the red ring: ${pullWords()}${aiming.power >= FULL_POWER_SHOWN ? '' : ', pull longer for more'}`;
+}
 /** The hint's text now ('' hides it); once the level is cleared, the level's end in large type. */
 function hintText(): string {
   const c = handles.controls;
-  if (drag.body !== 0 && drag.body === handles.ball) {
-    if (swingMeets !== 0) return 'Let go: the ball swings along the dashes into the red ring';
-    // Swinging over everything: the hook is too high for the ball to pass low.
-    if (swingLow > LOW_SWING + 0.6) return `The ball swings high: lower the hook (${touch ? 'Down' : 'E'}) to swing it low`;
-    return 'Pull so the bright dashes cross a block, then let go';
-  }
+  const aim = aimHint(aimInOneLine());
+  if (aim !== null) return aim;
   if (cleared) {
     // The level's end, over the scene as the other games say it (the status line says it small);
     // once the player swings on, that those swings are for fun and the result stands.
     if (swingsUsed() > clearedWith.swings || clearedWith.tapped)
       return `${clearedBanner()}\nSwinging for fun: the result stands. ${touch ? 'Tap' : 'Press L or'} Level ${handles.level + 1} ▶`;
     return clearedBanner();
-  }
-  if (aiming.piece !== 0 && aiming.dragged && onRun()) return 'Let go to aim the next swing: it goes as soon as this one has hit';
-  if (aiming.piece !== 0 && aiming.dragged && glancing())
-    return `Glancing: the ball runs away from you and hits few blocks. Aim across the screen (${pullWords()})`;
-  if (aiming.piece !== 0 && aiming.dragged && handles.controls.moves.length > 0 && aimed !== 0)
-    return `Winding up… let go to re-aim this swing (no swing used): ${pullWords()}`;
-  if (aiming.piece !== 0 && aiming.dragged) {
-    // What the swing drawn in 3D shows (drawSwingPreview): a miss, or another structure in the way,
-    // said before the swing is used.
-    if (preview.meet === 0) return `The ball would miss: its dashes reach no block. Pull another way (${pullWords()})`;
-    if (!sameStructure(preview.meet, aiming.piece))
-      return `The ball meets ${pieceName(preview.meet)} first (red ring): let go to hit it, or pull another way`;
-    return `Let go: the ball swings along the dashes into the red ring: ${pullWords()}${aiming.power >= FULL_POWER_SHOWN ? '' : ', pull longer for more'}`;
   }
   if (shell.world.time < notice.until) return notice.text;
   // Settling: the count goes on as the wreckage comes down; the end card waits for it.
@@ -3051,7 +3058,7 @@ function frame(): void {
       ? `${clearedLine()} · final score ${banked + levelScore} · ${touch ? 'tap' : 'press L or'} Level ${handles.level + 1} ▶`
       : reachedAt >= 0
         ? `Level ${handles.level} · target reached! · down ${f}/${n} · score ${banked + levelScore} (counting the fall${falling > 0 ? `: ${falling} still moving` : ''})`
-        : `Level ${handles.level} · swings left ${left}/${budget} (★★★ in ${swingPar(handles.level)}) · down ${f}/${n} (clear at ${clearTarget(handles.pieces, handles.level)})${swingPhase()}${
+        : `Level ${handles.level}${scoreOnStatus()} · swings left ${left}/${budget} (★★★ in ${swingPar(handles.level)}) · down ${f}/${n} (clear at ${clearTarget(handles.pieces, handles.level)})${swingPhase()}${
             swing.result && shell.world.time - swing.resultAt < RESULT_SHOWN ? ` · ${swing.result}` : ''
           }${left <= 0 && handles.controls.moves.length === 0 ? ` · out of swings: ${touch ? 'tap ↻' : 'press R'} to retry` : ''}${swayHint()}`;
     showNext(cleared, `Level ${handles.level + 1} ▶`);
@@ -3060,12 +3067,23 @@ function frame(): void {
     // On a phone the intro, and every hint after the first swing, is compact, so it leaves the top
     // of the scene in sight (the intro within the strip the framing keeps clear: introRoom).
     const intro = text.startsWith(INTRO_LEAD);
-    hint.classList.toggle('compact', touch && SMALL_SCREEN && (swingsUsed() > 0 || (introRoom() && intro)) && !cleared);
+    // While a drag is held on a phone, its aim in one compact line (aimInOneLine), clear of the scene's top.
+    const oneLine = aimInOneLine();
+    hint.classList.toggle('compact', touch && SMALL_SCREEN && (swingsUsed() > 0 || (introRoom() && intro) || oneLine) && !cleared);
+    hint.classList.toggle('one-line', oneLine);
     drawPlan();
     readout.textContent = params.debug
       ? `score ${banked + levelScore} · step ${stepMs.toFixed(1)} ms (worst ${worstMs.toFixed(1)}) · ${handles.pieces.length} pieces`
       : `score ${banked + levelScore}`;
   }
+}
+
+/**
+ * The score on the status line (' · score N') on a small screen, where the side column that shows it
+ * (`readout`) is in the ☰ drawer; '' on a large one, where that column is in sight.
+ */
+function scoreOnStatus(): string {
+  return pageLayout().compact() ? ` · score ${banked + levelScore}` : '';
 }
 
 /** Swing amplitude, m, over which the status line tells a player driving the crane how to stop it. */
@@ -3270,6 +3288,8 @@ viewButton.textContent = '⌂ view';
 viewButton.title = 'Back to the default view';
 viewButton.style.cssText =
   'position: absolute; right: 8px; bottom: 8px; z-index: 5; padding: 4px 10px; font: 600 13px system-ui, sans-serif; color: #fff; background: rgba(20, 16, 10, 0.6); border: 1px solid rgba(255, 255, 255, 0.35); border-radius: 6px; cursor: pointer; touch-action: manipulation';
+// For a finger, at least 44 px tall (the touch target guidelines' least; 25 px with the text's own height).
+if (touch) viewButton.style.minHeight = '44px';
 viewButton.addEventListener('click', (event) => {
   event.stopPropagation();
   frameAgain();

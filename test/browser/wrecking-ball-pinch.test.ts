@@ -16,7 +16,7 @@ interface WB {
   app: { camera: { position: { x: number; y: number; z: number } } };
 }
 
-describe('wrecking ball on a phone: a pinch, a glancing pull', () => {
+describe('wrecking ball on a phone: a pinch, a pull toward the camera, the HUD', () => {
   let h: Harness;
   beforeAll(async () => {
     h = await Harness.start();
@@ -51,7 +51,7 @@ describe('wrecking ball on a phone: a pinch, a glancing pull', () => {
     await send('touchEnd', []);
   }
 
-  it('a pull toward the camera says it will glance; a pull across the screen does not', async () => {
+  it('a pull toward the camera says what its dashes meet, as one across the screen does; the HUD shows the score', async () => {
     const g = await h.openGame('wrecking-ball', {
       viewport: { width: 390, height: 844 },
       touch: true,
@@ -79,7 +79,13 @@ describe('wrecking ball on a phone: a pinch, a glancing pull', () => {
       const r = document.querySelector('canvas')!.getBoundingClientRect();
       return { x: r.left + ((s.x + 1) / 2) * r.width, y: r.top + ((1 - s.y) / 2) * r.height };
     });
-    /** The hint while a finger pulls (dx, dy) px from the tower, before it lifts (the touch is then cancelled). */
+    /** Page px of one line of the compact hint: 12 px type at line height 1.25 (15 px) and 2 + 2 px of padding. */
+    const ONE_LINE_PX = 19;
+    /**
+     * The hint while a finger pulls (dx, dy) px from the tower, before it lifts (the touch is then
+     * cancelled). It must be one line there (it took three, 49 px, over the top of the scene): within
+     * 2 px of ONE_LINE_PX (the border and rounding).
+     */
     const hintWhilePulling = async (dx: number, dy: number): Promise<string> => {
       const cdp = await g.page.context().newCDPSession(g.page);
       const pt = (k: number): Pt[] => [{ x: tower.x + (dx * k) / 5, y: tower.y + (dy * k) / 5, id: 1 }];
@@ -87,15 +93,28 @@ describe('wrecking ball on a phone: a pinch, a glancing pull', () => {
       for (let k = 1; k <= 5; k++) await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: pt(k) });
       await g.page.waitForTimeout(200);
       const text = (await g.page.locator('[data-hud="tap-hint"]').textContent()) ?? '';
+      expect((await g.page.locator('[data-hud="tap-hint"]').boundingBox())!.height).toBeLessThanOrEqual(ONE_LINE_PX + 2);
       await cdp.send('Input.dispatchTouchEvent', { type: 'touchCancel', touchPoints: [] });
       await cdp.detach();
       return text;
     };
-    // Straight down the screen: the ball would run straight away from the camera.
-    expect(await hintWhilePulling(0, 100)).toMatch(/^Glancing/);
+    // The status line over the scene carries the score on a phone (the side column's score is in the
+    // menu drawer there), after the level and before the swings.
+    expect(await g.page.locator('[data-hud="wrecking-ball"]').textContent()).toMatch(/^Level 1 · score 0 · swings left 5\/5/);
+    // The ⌂ view button is a finger's target: at least 44 px tall (it was 25), within the viewport.
+    const view = (await g.page.locator('[data-hud="reset-view"]').boundingBox())!;
+    expect(view.height).toBeGreaterThanOrEqual(44);
+    expect(view.y + view.height).toBeLessThanOrEqual(844);
+    // Straight down the screen: the ball would run straight away from the camera. The hint says what
+    // the dashes drawn in 3D meet (it said "Glancing: ... hits few blocks" from the camera's angle
+    // alone, on swings that brought down 18 blocks).
+    const toward = await hintWhilePulling(0, 100);
+    expect(toward).not.toMatch(/Glancing|few blocks/);
+    expect(toward).toMatch(/^(Let go|The ball (meets|would miss))/);
     // To the left: the ball runs across the screen.
     const across = await hintWhilePulling(-90, 0);
-    expect(across).toMatch(/^Let go: the ball swings along the dashes into the red ring/);
+    // In a few words on a phone: let go, and the pull's power and speed.
+    expect(across).toMatch(/^Let go: (full power|power \d+ %), \d+\.\d m\/s$/);
     expect(await g.page.evaluate(() => (window.game as unknown as WB).swings().used)).toBe(0);
     expect(g.errors).toEqual([]);
     await g.close();
