@@ -269,7 +269,8 @@ function targetDistance(): number {
 
 /**
  * Days per real second now: the aiming rate (./wait-pace.ts heldWaitRate while Wait is held:
- * ramping up with the days waited, slow near a launch window), RUN_RATE while a tapped Wait runs
+ * ramping up with the days waited, slow near a launch window, slower still while the aim nearly
+ * arrives), RUN_RATE while a tapped Wait runs
  * its days, a flight's rate (3 times it in the cruise far from the target, 3 times that while held,
  * at most 400; BURN_SLOW of it just after a burn), nothing after a flight ends.
  */
@@ -287,7 +288,7 @@ function currentRate(): number {
   if (!Number.isNaN(runTo) && !waiting) return RUN_RATE;
   if (!waiting) return params.rate;
   const waited = Number.isNaN(waitFrom) ? 0 : Math.max(0, shell.world.time - waitFrom);
-  return heldWaitRate(params.rate, waited, windowNearness);
+  return heldWaitRate(params.rate, waited, windowNearness, aimMiss);
 }
 
 /** The chosen step, days (the panel's "longest step"). */
@@ -306,6 +307,8 @@ function stepWorld(world: PhysicsWorld): void {
     if (Number.isNaN(waitFrom)) waitFrom = world.time;
     const w = launchWindow();
     windowNearness = Math.min(w.next, w.period - w.next);
+    // How near the launch as aimed comes to the target now, in rings: near, the held Wait slows.
+    aimMiss = planFlight(world, handles, mission(), aim, waitPlan, WAIT_PLAN_SAMPLES).distance / mission().zone;
   }
   if (phase !== 'aim') runTo = Number.NaN;
   const dt = flight && phase === 'flight' ? flight.dt : missionTimeStep(mission(), baseStep());
@@ -398,6 +401,11 @@ let runTo = Number.NaN;
 let runToWindow = false;
 /** Days from now to the nearest launch window, worked out each tick while Wait is held (Infinity otherwise). */
 let windowNearness = Number.POSITIVE_INFINITY;
+/** The launch as aimed misses the target by, arrival rings (the quick Kepler plan), worked out each tick while Wait is held. */
+let aimMiss = Number.POSITIVE_INFINITY;
+/** The plan `aimMiss` is read from, and its samples (a quick look each tick: about 1 ms). */
+const waitPlan = createFlightPlan();
+const WAIT_PLAN_SAMPLES = 100;
 /** World time, days, a run last stopped at a launch window (NaN for none): the date line says so. */
 let atWindow = Number.NaN;
 /** performance.now() Wait was last pressed (a short press is a tap: WAIT_TAP_DAYS on). */
@@ -414,6 +422,7 @@ function releaseWait(): void {
   if (!waiting) return;
   waiting = false;
   windowNearness = Number.POSITIVE_INFINITY;
+  aimMiss = Number.POSITIVE_INFINITY;
   if (phase === 'aim' && performance.now() - waitPressedAt < WAIT_TAP_MS) {
     runTo = shell.world.time + WAIT_TAP_DAYS;
     runToWindow = false;
