@@ -311,6 +311,7 @@ function stepWorld(world: PhysicsWorld): void {
     aimMiss = planFlight(world, handles, mission(), aim, waitPlan, WAIT_PLAN_SAMPLES).distance / mission().zone;
   }
   if (phase !== 'aim') runTo = Number.NaN;
+  if (phase === 'flight') flightTicks++;
   const dt = flight && phase === 'flight' ? flight.dt : missionTimeStep(mission(), baseStep());
   carry += currentRate() * TICK;
   if (phase === 'aim' && !Number.isNaN(runTo)) {
@@ -628,6 +629,7 @@ function launch(): void {
   heliocentricState(shell.world, handles, handles.bodies[mission().target], launchTarget);
   flightDaysPerSecond = flightRate(flight.deadline);
   phase = 'flight';
+  flightTicks = 0;
   launches++;
   // The launch's forecast is the flight's course from the launch.
   forecastKey = wantedKey();
@@ -671,6 +673,20 @@ function endOfFlight(): void {
       : missAdvice(flight, true);
   showCard(flight);
   updateStatus(true);
+}
+
+/**
+ * Loop ticks a flight has run (counted in `stepWorld`), and how many of them the Abort button waits
+ * before it acts (0.8 s at 60 ticks a second): Abort takes Launch's place in the bar, so a double tap
+ * on Launch (the second tap ~0.3 s later) landed on Abort and ended the flight it had just begun.
+ * Counted in ticks, not ms, so a paused flight keeps it and tests drive it with steps.
+ */
+let flightTicks = 0;
+const ABORT_GUARD_TICKS = 48;
+/** The Abort button: `retry`, once the flight has run ABORT_GUARD_TICKS ticks. */
+function abortTap(): void {
+  if (phase === 'flight' && flightTicks < ABORT_GUARD_TICKS) return;
+  retry();
 }
 
 /** Try again: back to the moment of the last launch, same aim. */
@@ -2212,7 +2228,7 @@ const pad = createButtonBar(
       onPress: () => pressWait(),
       onRelease: () => releaseWait(),
     },
-    { label: 'Abort', name: 'abort the flight: back to the launch', onTap: () => retry() },
+    { label: 'Abort', name: 'abort the flight: back to the launch', onTap: () => abortTap() },
     { label: 'Try again', name: 'try again from the launch (Enter)', onTap: () => retry() },
     { label: 'Next mission', name: 'next mission (Enter)', onTap: () => advance() },
     { label: 'Hint', name: 'hint: what to try (H)', onTap: () => toggleHint() },

@@ -31,9 +31,10 @@ export const NEAR_WINDOW_RATE = 15;
  * While the launch as aimed comes within AIM_NEAR_RINGS arrival rings of the target (the quick Kepler
  * plan's closest approach, ./missions.ts planFlight), a held Wait runs at no more than AIM_NEAR_RATE:
  * the days that arrive then last seconds, so a player holding Wait can let go inside them (at
- * NEAR_WINDOW_RATE they lasted about 1.5 s, and a held Wait ran past them).
+ * NEAR_WINDOW_RATE they lasted about 1.5 s, and a held Wait ran past them). The starting aim of
+ * missions 2 on misses by more (./advice.ts START_SHORT keeps it off the orbit), so it does not slow.
  */
-export const AIM_NEAR_RINGS = 2;
+export const AIM_NEAR_RINGS = 1.2;
 export const AIM_NEAR_RATE = 3;
 
 /** Days a tap of Wait runs time on (about a fifth of Mars's arrival window: a fine adjustment). */
