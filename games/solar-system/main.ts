@@ -111,6 +111,7 @@ import { adviseAim, adviseBurn, createAimAdvice, createBurnAdvice, SPEED_STEP, s
 import { displayRadius, toDisplay } from './distance-scale';
 import { copyForecast, createForecast, ForecastJob } from './forecast';
 import { keplerState } from './kepler';
+import { meetingWords } from './meeting-words';
 import {
   type Aim,
   BURN_STEP,
@@ -376,7 +377,7 @@ let failedTries = 0;
  * Whether the aim shows the forecast's verdict: the ring where the target will be at the closest
  * approach, the probe's place then, ✓ or ✗ and the hint's presses. Before a mission's first failed
  * try the player reads the map instead (the probe's path to the target's orbit and the day it gets
- * there, the target's own path to that day, and the line's verdict in days, `meetingVerdict`):
+ * there, the target's own path to that day, and the line’s verdict, `meetingVerdict`):
  * judging the launch on the map is the game, and the ring a check for every press of ↑ made it a
  * search for the ✓.
  */
@@ -2437,7 +2438,7 @@ function pathCrossing(m: Mission): number {
  * The line's end while aiming before the full verdict shows (`verdictShown`: the ring at arrival on
  * the map): what the launch's path does, to read against the map, and its verdict: short of the
  * target's orbit (how far it gets), or the day it meets the orbit line and whether the target is
- * there then (`meetingVerdict`: a hit, or by how many days it misses).
+ * there then (`meetingVerdict`: exact on the first mission, coarse from the second).
  */
 function reading(m: Mission): [string, string] {
   const f = forecast;
@@ -2468,21 +2469,15 @@ function reading(m: Mission): [string, string] {
 }
 
 /**
- * The reading line's verdict on the meeting at point `i` of the forecast's path (`pathCrossing`):
- * a hit when the forecast arrives ("✓ Mars will be there", the stars the speed earns), else by how
- * many days the target misses the probe there (./orbit-crossing.ts targetLag: "✗ Mars gets there
- * 23 days later", or "✗ Mars passed there 12 days before"), or, within a day, how close the probe passes.
- * A stranger read "Will Mars be there?" at some speeds with nothing saying whether it would be.
+ * The reading line's verdict on the meeting at point `i` of the forecast's path (`pathCrossing`),
+ * ./meeting-words.ts meetingWords: exact on the first mission (a hit, "✓ Mars will be there" and the
+ * stars, else by how many days the target misses the probe there, ./orbit-crossing.ts targetLag),
+ * coarse from the second on ("Mars will be close", "a little behind", "far ahead").
  */
 function meetingVerdict(m: Mission, i: number): [string, string] {
-  const t = m.target;
-  if (forecast.outcome === 'arrived') return [`✓ ${t} will be there · ${starText(starsFor(m, aim.speed))}`, 'ok'];
   const lag = targetLag(forecast, i, crossingTarget, sunMu());
-  const days = Math.round(Math.abs(lag));
-  const n = `${days} day${days === 1 ? '' : 's'}`;
-  if (days < 1) return [`✗ misses ${t}: ${missWords(forecast.closest, m.zone)}`, 'bad'];
-  // Short: the line should stay on one line at desktop size where it can.
-  return [lag > 0 ? `✗ ${t} gets there ${n} later` : `✗ ${t} passed there ${n} before`, 'bad'];
+  const arrived = forecast.outcome === 'arrived';
+  return meetingWords(m.target, lag, arrived, missionIndex === 0, starText(starsFor(m, aim.speed)), missWords(forecast.closest, m.zone));
 }
 /** The path's crossings of the target's orbit (`reading`), indices into the forecast's path. */
 const crossingList: number[] = [];
