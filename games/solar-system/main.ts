@@ -111,6 +111,7 @@ import { adviseAim, adviseBurn, createAimAdvice, createBurnAdvice, SPEED_STEP, s
 import { displayRadius, toDisplay } from './distance-scale';
 import { copyForecast, createForecast, ForecastJob } from './forecast';
 import { keplerState } from './kepler';
+import { meetingWords } from './meeting-words';
 import {
   type Aim,
   BURN_STEP,
@@ -269,7 +270,8 @@ function targetDistance(): number {
 
 /**
  * Days per real second now: the aiming rate (./wait-pace.ts heldWaitRate while Wait is held:
- * ramping up with the days waited, slow near a launch window), RUN_RATE while a tapped Wait runs
+ * ramping up with the days waited, slow near a launch window, slower still while the aim nearly
+ * arrives), RUN_RATE while a tapped Wait runs
  * its days, a flight's rate (3 times it in the cruise far from the target, 3 times that while held,
  * at most 400; BURN_SLOW of it just after a burn), nothing after a flight ends.
  */
@@ -287,7 +289,7 @@ function currentRate(): number {
   if (!Number.isNaN(runTo) && !waiting) return RUN_RATE;
   if (!waiting) return params.rate;
   const waited = Number.isNaN(waitFrom) ? 0 : Math.max(0, shell.world.time - waitFrom);
-  return heldWaitRate(params.rate, waited, windowNearness);
+  return heldWaitRate(params.rate, waited, windowNearness, aimMiss);
 }
 
 /** The chosen step, days (the panel's "longest step"). */
@@ -306,8 +308,11 @@ function stepWorld(world: PhysicsWorld): void {
     if (Number.isNaN(waitFrom)) waitFrom = world.time;
     const w = launchWindow();
     windowNearness = Math.min(w.next, w.period - w.next);
+    // How near the launch as aimed comes to the target now, in rings: near, the held Wait slows.
+    aimMiss = planFlight(world, handles, mission(), aim, waitPlan, WAIT_PLAN_SAMPLES).distance / mission().zone;
   }
   if (phase !== 'aim') runTo = Number.NaN;
+  if (phase === 'flight') flightTicks++;
   const dt = flight && phase === 'flight' ? flight.dt : missionTimeStep(mission(), baseStep());
   carry += currentRate() * TICK;
   if (phase === 'aim' && !Number.isNaN(runTo)) {
@@ -372,7 +377,7 @@ let failedTries = 0;
  * Whether the aim shows the forecast's verdict: the ring where the target will be at the closest
  * approach, the probe's place then, ✓ or ✗ and the hint's presses. Before a mission's first failed
  * try the player reads the map instead (the probe's path to the target's orbit and the day it gets
- * there, the target's own path to that day, and the line's verdict in days, `meetingVerdict`):
+ * there, the target's own path to that day, and the line’s verdict, `meetingVerdict`):
  * judging the launch on the map is the game, and the ring a check for every press of ↑ made it a
  * search for the ✓.
  */
@@ -398,6 +403,11 @@ let runTo = Number.NaN;
 let runToWindow = false;
 /** Days from now to the nearest launch window, worked out each tick while Wait is held (Infinity otherwise). */
 let windowNearness = Number.POSITIVE_INFINITY;
+/** The launch as aimed misses the target by, arrival rings (the quick Kepler plan), worked out each tick while Wait is held. */
+let aimMiss = Number.POSITIVE_INFINITY;
+/** The plan `aimMiss` is read from, and its samples (a quick look each tick: about 1 ms). */
+const waitPlan = createFlightPlan();
+const WAIT_PLAN_SAMPLES = 100;
 /** World time, days, a run last stopped at a launch window (NaN for none): the date line says so. */
 let atWindow = Number.NaN;
 /** performance.now() Wait was last pressed (a short press is a tap: WAIT_TAP_DAYS on). */
@@ -414,6 +424,7 @@ function releaseWait(): void {
   if (!waiting) return;
   waiting = false;
   windowNearness = Number.POSITIVE_INFINITY;
+  aimMiss = Number.POSITIVE_INFINITY;
   if (phase === 'aim' && performance.now() - waitPressedAt < WAIT_TAP_MS) {
     runTo = shell.world.time + WAIT_TAP_DAYS;
     runToWindow = false;
@@ -619,6 +630,7 @@ function launch(): void {
   heliocentricState(shell.world, handles, handles.bodies[mission().target], launchTarget);
   flightDaysPerSecond = flightRate(flight.deadline);
   phase = 'flight';
+  flightTicks = 0;
   launches++;
   // The launch's forecast is the flight's course from the launch.
   forecastKey = wantedKey();
@@ -662,6 +674,20 @@ function endOfFlight(): void {
       : missAdvice(flight, true);
   showCard(flight);
   updateStatus(true);
+}
+
+/**
+ * Loop ticks a flight has run (counted in `stepWorld`), and how many of them the Abort button waits
+ * before it acts (0.8 s at 60 ticks a second): Abort takes Launch's place in the bar, so a double tap
+ * on Launch (the second tap ~0.3 s later) landed on Abort and ended the flight it had just begun.
+ * Counted in ticks, not ms, so a paused flight keeps it and tests drive it with steps.
+ */
+let flightTicks = 0;
+const ABORT_GUARD_TICKS = 48;
+/** The Abort button: `retry`, once the flight has run ABORT_GUARD_TICKS ticks. */
+function abortTap(): void {
+  if (phase === 'flight' && flightTicks < ABORT_GUARD_TICKS) return;
+  retry();
 }
 
 /** Try again: back to the moment of the last launch, same aim. */
@@ -2203,7 +2229,7 @@ const pad = createButtonBar(
       onPress: () => pressWait(),
       onRelease: () => releaseWait(),
     },
-    { label: 'Abort', name: 'abort the flight: back to the launch', onTap: () => retry() },
+    { label: 'Abort', name: 'abort the flight: back to the launch', onTap: () => abortTap() },
     { label: 'Try again', name: 'try again from the launch (Enter)', onTap: () => retry() },
     { label: 'Next mission', name: 'next mission (Enter)', onTap: () => advance() },
     { label: 'Hint', name: 'hint: what to try (H)', onTap: () => toggleHint() },
@@ -2412,7 +2438,7 @@ function pathCrossing(m: Mission): number {
  * The line's end while aiming before the full verdict shows (`verdictShown`: the ring at arrival on
  * the map): what the launch's path does, to read against the map, and its verdict: short of the
  * target's orbit (how far it gets), or the day it meets the orbit line and whether the target is
- * there then (`meetingVerdict`: a hit, or by how many days it misses).
+ * there then (`meetingVerdict`: exact on the first mission, coarse from the second).
  */
 function reading(m: Mission): [string, string] {
   const f = forecast;
@@ -2443,21 +2469,15 @@ function reading(m: Mission): [string, string] {
 }
 
 /**
- * The reading line's verdict on the meeting at point `i` of the forecast's path (`pathCrossing`):
- * a hit when the forecast arrives ("✓ Mars will be there", the stars the speed earns), else by how
- * many days the target misses the probe there (./orbit-crossing.ts targetLag: "✗ Mars gets there
- * 23 days later", or "✗ Mars passed there 12 days before"), or, within a day, how close the probe passes.
- * A stranger read "Will Mars be there?" at some speeds with nothing saying whether it would be.
+ * The reading line's verdict on the meeting at point `i` of the forecast's path (`pathCrossing`),
+ * ./meeting-words.ts meetingWords: exact on the first mission (a hit, "✓ Mars will be there" and the
+ * stars, else by how many days the target misses the probe there, ./orbit-crossing.ts targetLag),
+ * coarse from the second on ("Mars will be close", "a little behind", "far ahead").
  */
 function meetingVerdict(m: Mission, i: number): [string, string] {
-  const t = m.target;
-  if (forecast.outcome === 'arrived') return [`✓ ${t} will be there · ${starText(starsFor(m, aim.speed))}`, 'ok'];
   const lag = targetLag(forecast, i, crossingTarget, sunMu());
-  const days = Math.round(Math.abs(lag));
-  const n = `${days} day${days === 1 ? '' : 's'}`;
-  if (days < 1) return [`✗ misses ${t}: ${missWords(forecast.closest, m.zone)}`, 'bad'];
-  // Short: the line should stay on one line at desktop size where it can.
-  return [lag > 0 ? `✗ ${t} gets there ${n} later` : `✗ ${t} passed there ${n} before`, 'bad'];
+  const arrived = forecast.outcome === 'arrived';
+  return meetingWords(m.target, lag, arrived, missionIndex === 0, starText(starsFor(m, aim.speed)), missWords(forecast.closest, m.zone));
 }
 /** The path's crossings of the target's orbit (`reading`), indices into the forecast's path. */
 const crossingList: number[] = [];

@@ -27,24 +27,37 @@ export const WAIT_MAX_GAIN = 4;
 export const NEAR_WINDOW_DAYS = 60;
 export const NEAR_WINDOW_RATE = 15;
 
+/**
+ * While the launch as aimed comes within AIM_NEAR_RINGS arrival rings of the target (the quick Kepler
+ * plan's closest approach, ./missions.ts planFlight), a held Wait runs at no more than AIM_NEAR_RATE:
+ * the days that arrive then last seconds, so a player holding Wait can let go inside them (at
+ * NEAR_WINDOW_RATE they lasted about 1.5 s, and a held Wait ran past them). The starting aim of
+ * missions 2 on misses by more (./advice.ts START_SHORT keeps it off the orbit), so it does not slow.
+ */
+export const AIM_NEAR_RINGS = 1.2;
+export const AIM_NEAR_RATE = 3;
+
 /** Days a tap of Wait runs time on (about a fifth of Mars's arrival window: a fine adjustment). */
 export const WAIT_TAP_DAYS = 10;
 
 /**
  * Days per real second of a held Wait. `aimingRate` the rate time runs at while aiming (days/s,
  * >= 0), `waited` days since the hold began (>= 0), `fromWindow` days to the nearest launch
- * window of the mission's target (>= 0; Infinity for none). @throws RangeError on a negative or
- * NaN argument.
+ * window of the mission's target (>= 0; Infinity for none), `aimMiss` the launch as aimed now misses
+ * the target by, in arrival rings (the Kepler plan's closest approach over the ring's radius, >= 0;
+ * Infinity when unknown). @throws RangeError on a negative or NaN argument.
  */
-export function heldWaitRate(aimingRate: number, waited: number, fromWindow: number): number {
+export function heldWaitRate(aimingRate: number, waited: number, fromWindow: number, aimMiss = Infinity): number {
   for (const [name, x] of [
     ['aimingRate', aimingRate],
     ['waited', waited],
     ['fromWindow', fromWindow],
+    ['aimMiss', aimMiss],
   ] as const)
     if (!(x >= 0)) throw new RangeError(`heldWaitRate: ${name} must be >= 0, got ${x}`);
   const ramped = Math.max(WAIT_RATE, 4 * aimingRate) * Math.min(WAIT_MAX_GAIN, 1 + waited / WAIT_RAMP);
-  return fromWindow < NEAR_WINDOW_DAYS ? Math.min(ramped, NEAR_WINDOW_RATE) : ramped;
+  const rate = fromWindow < NEAR_WINDOW_DAYS ? Math.min(ramped, NEAR_WINDOW_RATE) : ramped;
+  return aimMiss < AIM_NEAR_RINGS ? Math.min(rate, AIM_NEAR_RATE) : rate;
 }
 
 /** When the next launch window comes: `next` days from now, in [0, period), and the synodic `period` between windows, days. */

@@ -1337,6 +1337,8 @@ describe('phone controls', () => {
     // In flight the speed buttons burn: + fast uses 0.05 km/s of the fuel.
     await g.page.getByRole('button', { name: 'burn to speed up (↑)', exact: true }).tap();
     await g.waitFor(() => ((window.game as unknown as Solar).mission().flight?.fuelUsed ?? 0) > 0.04, null);
+    // Abort acts once the flight has run 0.8 s (48 ticks; a tap sooner is a double tap on Launch).
+    await g.runFrames(48, { draw: false });
     await g.page.getByRole('button', { name: 'abort the flight: back to the launch', exact: true }).tap();
     await g.waitFor(() => (window.game as unknown as Solar).mission().phase === 'aim', null);
     expect(await read(g, 'mission().aim.speed')).toBeGreaterThan(speed);

@@ -532,7 +532,14 @@ describe('projects', () => {
     expect(aimed.plan.hit).toBe(true);
     // The forecast is the flight flown ahead: the card's flight days are the forecast's, within a day.
     // (The line promised the score before the launch; it no longer says whether it arrives.)
-    await g.page.evaluate(() => (window.game as unknown as Flow).launch());
+    // Abort takes Launch's place in the bar: a tap on it in the flight's first 48 ticks (0.8 s) does
+    // nothing, so a double tap on Launch does not end the flight it began (it did: back to aiming).
+    const kept = await g.page.evaluate(() => {
+      (window.game as unknown as Flow).launch();
+      document.querySelector<HTMLElement>('.ss-pad button[data-pad="abort"]')!.click();
+      return (window.game as unknown as Flow).mission().phase;
+    });
+    expect(kept).toBe('flight');
     // The arrival gets its moment before the card: "Mars reached!" and the three stars over the scene.
     const ended = await g.page.evaluate(() => {
       const state = (window.game as unknown as Flow).finishFlight();
