@@ -460,6 +460,22 @@ export function roundMiss(round: HoopRound): boolean {
   return true;
 }
 
+/** How near the ceiling a flight's highest point counts as off it, m (missWords): a game step's travel up at 18 m/s (60 Hz), as the last step before the touch may stop that short of it. */
+const CEILING_NEAR = 0.3;
+
+/**
+ * What the page says of a miss (a thrown ball that could score and did not): "Missed", with why when
+ * its flight shows it (its centre's highest point `top`, m, against `ceiling`, the highest a ball's
+ * centre goes under the box's top, m, and the rim's height `spot.y`): off the ceiling, or short of the
+ * rim; and that the streak is over when the miss broke one (`broke`, roundMiss). Said for every miss:
+ * one with no streak to break said nothing, and a full-power throw off the ceiling that fell back onto
+ * the heap read as a throw that never happened.
+ */
+export function missWords(broke: boolean, top: number, ceiling: number, spot: HoopSpot): string {
+  const why = top >= ceiling - CEILING_NEAR ? ': off the ceiling' : top < spot.y ? ': short of the rim' : '';
+  return `Missed${why}${broke ? ' · streak over' : ''}`;
+}
+
 /** Below this speed into a surface a bounce has no restitution, m/s (the engine's default `restitutionThreshold`). */
 const RESTITUTION_THRESHOLD = 0.5;
 

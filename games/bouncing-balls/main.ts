@@ -115,6 +115,7 @@ import {
   MAX_THROW_SPEED,
   MISS_SECONDS,
   mayScore,
+  missWords,
   NET,
   netContact,
   PLAYER_RADIUS,
@@ -210,10 +211,13 @@ let hoopMovedAt = Number.NEGATIVE_INFINITY;
  * The balls in flight after a throw: whether each may still score (released below the rim, not up
  * through the net), its centre after the last step, m, what it is worth (BALL_POINTS), the world
  * time it was thrown, s, and what it has touched since (markTouches): anything (`touched`: no swish)
- * and a wall of the box or a ramp (`trick`). A ball that has not gone in MISS_SECONDS after its throw
- * is a miss and leaves.
+ * and a wall of the box or a ramp (`trick`), and its centre's highest point, m (`top`: missWords). A
+ * ball that has not gone in MISS_SECONDS after its throw is a miss and leaves.
  */
-let flights = new Map<number, { scores: boolean; x: number; y: number; kind: BallKind; at: number; touched: boolean; trick: boolean }>();
+let flights = new Map<
+  number,
+  { scores: boolean; x: number; y: number; top: number; kind: BallKind; at: number; touched: boolean; trick: boolean }
+>();
 /** The player's basketballs (made by a throw or a click from empty space): drawn orange with seams. */
 let basketballs = new Set<number>();
 /** The heap's gold ball (0 when the heap is empty): worth BALL_POINTS.gold. */
@@ -262,8 +266,12 @@ let lastBasket: {
   kind: 'basketball',
   style: 'plain',
 };
-/** When a miss last broke a streak (performance.now() ms), for the status row's word. */
+/** When a thrown ball last missed (playSeconds, s of game time), for the status row's word (missSaid, MISS_SHOWN s). */
 let missAt = -1e9;
+/** How long the status row says a miss, s of game time. */
+const MISS_SHOWN = 2.5;
+/** What the status row says of the last miss (hoop.ts missWords). */
+let missSaid = 'Missed';
 
 /** Builds a fresh world with the scene from the current params (the shell calls it at start and on R). */
 function createWorld(): PhysicsWorld {
@@ -751,6 +759,7 @@ function playHoop(world: PhysicsWorld): void {
     }
     b.x = x;
     b.y = y;
+    b.top = Math.max(b.top, y);
     // Falling below the rim's line beside the hoop (the way in is down through it), or out too long: a
     // miss. A ball above the rim over the hoop (on the backboard's top, on the rim) may still drop in:
     // it has MISS_SECONDS more, and then the rest of MISS_SECONDS_OVER_HOOP.
@@ -759,11 +768,16 @@ function playHoop(world: PhysicsWorld): void {
     const out = world.time - b.at;
     if (falling || out > MISS_SECONDS_OVER_HOOP || (out > MISS_SECONDS && !overHoop)) {
       flights.delete(e);
-      if (b.scores && roundMiss(round)) {
-        missAt = performance.now();
+      if (b.scores && round.phase !== 'over') {
+        const broke = roundMiss(round);
+        // Every miss is said, with why (a throw off the ceiling back onto the heap looked like none).
+        missAt = playSeconds;
+        missSaid = missWords(broke, b.top, layoutOf(TALL).box.max[1] - world.components.Ball.radius[slotOf(e)]!, spots[hoopAt]!);
         // A falling pair of low notes: the streak is gone.
-        sound.chime(294, 0.2);
-        setTimeout(() => sound.chime(220, 0.35), 110);
+        if (broke) {
+          sound.chime(294, 0.2);
+          setTimeout(() => sound.chime(220, 0.35), 110);
+        }
       }
     }
   }
@@ -1868,7 +1882,7 @@ function launch(e: number, thrown: boolean): void {
   const scores = mayScore(hoopSpots(TALL)[hoopAt]!, by);
   if (basketballs.has(e)) renderer.setColor(e, scores ? PLAYER_COLOR : HIGH_COLOR);
   // A drop falls: it cannot go down through the hoop from below the rim, nor be a miss.
-  if (thrown) flights.set(e, { scores, x: bx, y: by, kind: kindOf(e), at: shell.world.time, touched: false, trick: false });
+  if (thrown) flights.set(e, { scores, x: bx, y: by, top: by, kind: kindOf(e), at: shell.world.time, touched: false, trick: false });
   else flights.delete(e);
   if (round.phase !== 'over' && thrown) {
     roundShot(round);
@@ -3152,8 +3166,8 @@ function updateStatus(): void {
             : `Bonus: a swish (touching nothing) +${SHOT_BONUS.swish}, a trick shot off a wall or ramp +${SHOT_BONUS.trick}`;
   const hint = over
     ? `${touch ? 'Tap' : 'R or'} Play again for a new round`
-    : performance.now() - missAt < 2500
-      ? 'Missed: the streak is over'
+    : playSeconds - missAt < MISS_SHOWN
+      ? missSaid
       : performance.now() - blockedAt < HOOP_TAP_SHOWN
         ? `Blocked: not thrown · pick the top ball${touch ? '' : ' or hold one still 1 s to carry it'}`
         : performance.now() - hoopTapAt < HOOP_TAP_SHOWN

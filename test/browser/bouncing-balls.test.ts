@@ -1520,8 +1520,9 @@ describe('bouncing balls: the hoop game', () => {
       const g = page();
       await expect.poll(() => g.page.locator('[data-hud="hoop"]').isVisible()).toBe(true);
       // A throw from above the line: the hint says "Too high" until the next throw; a throw from below
-      // the line mid-drag ends it and a teaching hint shows (held while aiming: they take turns only
-      // between presses; the longest of them wrapped to two lines at 390 px).
+      // the line mid-drag ends it, says its miss (a ball dropped at 2 m falls short of the rim: said
+      // with no streak to break too, for 2.5 s of game time) and a teaching hint shows (held while
+      // aiming: they take turns only between presses; the longest of them wrapped to two lines at 390 px).
       await g.page.evaluate(() => (window.game as unknown as HoopGame).shoot(5, 14, 0, 0));
       const sample = () =>
         g.page.evaluate(() => {
@@ -1556,8 +1557,14 @@ describe('bouncing balls: the hoop game', () => {
       }
       await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
       await cdp.detach();
-      // The hint changed once while aiming ("Too high", then one teaching hint, held)...
-      expect(new Set(seen.map((s) => s.hint)).size).toBe(2);
+      // The hint changed twice while aiming ("Too high", the miss, then one teaching hint, held)...
+      const hints = [...new Set(seen.map((s) => s.hint))];
+      expect(hints).toHaveLength(3);
+      expect(hints[1]).toBe('Missed: short of the rim');
+      // ... the miss for a while (2.5 s of game time), in a row, before the teaching hint.
+      const missed = seen.map((s, i) => (s.hint === hints[1] ? i : -1)).filter((i) => i >= 0);
+      expect(missed.length).toBeGreaterThanOrEqual(2);
+      expect(missed.at(-1)! - missed[0]!).toBe(missed.length - 1);
       // ... and the field stayed where it was, to the pixel, with no line of the row cut short.
       expect(new Set(seen.map((s) => Math.round(s.field * 100) / 100)).size).toBe(1);
       for (const s of seen) expect(s.cut).toEqual([]);
