@@ -1879,6 +1879,8 @@ function drawDepthGauge(W: number, H: number, depth: number, order: number, bed:
     mark.visible = Math.abs(mark.y - yb) > 14;
   }
   for (let i = n; i < gaugeMarks.length; i++) gaugeMarks[i]!.visible = false;
+  // The ruler's left edge: its widest figure (shown or not, so the edge holds still as they hide) and the ticks.
+  gauge_.rulerLeft = Math.min(x0 - 4, ...gaugeMarks.slice(0, n).map((m) => m.x - m.width)) - 3;
   if (!gaugeDepth) {
     gaugeDepth = gaugeText(compact ? 14 : 12);
     gaugeDepth.style.fill = 0xffe066;
@@ -2079,7 +2081,8 @@ function drawEdgeMarks(W: number, H: number, k: number, cx: number, sy: (y: numb
     text.text = `${m.kind === 'ridge' ? 'ridge ' : ''}${Math.max(0, m.ahead).toFixed(0)} m`;
     text.style.fill = m.kind === 'mine' ? 0xffc2b3 : 0xf3dcae;
     // The arrow's tip at the edge, the icon inside it, the words inside the icon.
-    const tip = heading > 0 ? W - GAUGE_WIDTH - 6 : 6,
+    // Ahead, the tip stops short of the ruler's figures (the chips drawn over "50", "100" on a phone).
+    const tip = heading > 0 ? Math.min(W - GAUGE_WIDTH, gauge_.rulerLeft) - 6 : 6,
       icon = tip - heading * 22,
       w = text.width + 38,
       h = Math.max(24, text.height + 8);
@@ -2117,7 +2120,7 @@ function drawEdgeMarks(W: number, H: number, k: number, cx: number, sy: (y: numb
 }
 
 /** The depth gauge's tags as last drawn (tests): the boat's depth and the target's, each x, y, width, height, px (zeros while hidden). */
-const gauge_ = { depth: [0, 0, 0, 0], target: [0, 0, 0, 0] };
+const gauge_ = { depth: [0, 0, 0, 0], target: [0, 0, 0, 0], rulerLeft: Number.POSITIVE_INFINITY };
 
 /** The box of a gauge figure or tag (anchored at its right middle): x, y, width, height, px. */
 function textBox(text: Text): [number, number, number, number] {
@@ -3242,6 +3245,8 @@ shell.expose({
     targetText: gaugeTarget?.visible ? gaugeTarget.text : '',
     /** The live mines in view: each one's halo box (x, y, width, height, px), which the tags keep off. */
     mines: mineBoxes.map((b) => [...b]),
+    /** The depth ruler's left edge with its figures, px (the edge marks keep left of it). */
+    rulerLeft: gauge_.rulerLeft,
   }),
   /** The words drawn on the scene now (the gauge's, the ladder's, the tags, the marks): each one's text and type size, CSS px. */
   sceneTexts: () =>

@@ -1104,6 +1104,30 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
         expect(cross(r.depth, box), 'depth tag over a mine').toBe(false);
         expect(cross(r.target, box), 'target tag over a mine').toBe(false);
       }
+      // The mine beyond the view (85 m ahead, the phone's view about 60 m): its edge mark ("79 m")
+      // lies wholly left of the depth ruler and its figures ("50", "100"), not over them (issue 34:
+      // the chips covered x 340 to 390), and off the gauge's tags. Tolerance 0 px: a box apart.
+      const edge = await g.page.evaluate(() => {
+        const w = window.game as unknown as Sub & {
+          gaugeTags(): Tags & { rulerLeft: number };
+          edgeMarks(): { kind: string; box: number[] }[];
+          loop: { runFrames(n: number): void };
+        };
+        const m = w.mines()[0]!,
+          c = w.world.components,
+          e = w.hull();
+        c.Position.x[e] = m.x - 85;
+        c.Position.y[e] = m.y;
+        w.loop.runFrames(20);
+        return { tags: w.gaugeTags(), marks: w.edgeMarks() };
+      });
+      expect(edge.marks.some((mark) => mark.kind === 'mine')).toBe(true);
+      expect(edge.tags.rulerLeft).toBeLessThan(390 - 26);
+      for (const mark of edge.marks) {
+        expect(mark.box[0]! + mark.box[2]!, 'edge mark over the ruler').toBeLessThanOrEqual(edge.tags.rulerLeft);
+        expect(cross(edge.tags.depth, mark.box), 'edge mark over the depth tag').toBe(false);
+        expect(cross(edge.tags.target, mark.box), 'edge mark over the target tag').toBe(false);
+      }
     }
     // A ridge between the hull and the target: the label warns and the crest is marked on the seabed.
     const ridge = await g.page.evaluate(() => {
