@@ -1623,6 +1623,14 @@ function dismissTouchHint(): void {
   setTimeout(() => hint.remove(), 700);
 }
 addEventListener('pointerdown', dismissTouchHint, true);
+// The touch hint made small and put low at the scene's left, over the seabed and clear of the depth
+// ruler and its figures (52 px: GAUGE_WIDTH and its tags; game-kit's 14 px card, centred, covered the bottom fifth of a phone's sea, the ruler's
+// figures included), its type still 13 px.
+const touchHintStyle = document.createElement('style');
+touchHintStyle.textContent =
+  'body .bp-touch-hint { font: 13px/1.3 system-ui, sans-serif; padding: 4px 8px; bottom: 3px; left: 3px; transform: none;' +
+  ' max-width: calc(100% - 52px); border-radius: 8px; }';
+document.head.append(touchHintStyle);
 createButtonBar(
   [
     { label: 'Nose ↘', name: 'nose down', key: 'q' },

@@ -142,6 +142,26 @@ async function stickOnPhone(g: GamePage): Promise<void> {
   );
   const hint = g.page.locator('[data-hud="touch-hint"]');
   expect(await hint.count()).toBe(1);
+  // The card is small and low, clear of the depth ruler and its figures (issue 34: 14 px type, 119
+  // px tall at y 540 to 660 of a 575 px sea, across the ruler's "100"): at most 100 px tall (its four
+  // lines at 13 px come to 94), its foot within 8 px of the scene's, its right edge 48 px or more in
+  // from the scene's right (the ruler with its figures is 47 px wide), its type 13 px or more.
+  const card = await hint.evaluate((el) => {
+    const r = el.getBoundingClientRect(),
+      scene = document.querySelector('canvas')!.getBoundingClientRect();
+    return {
+      top: r.top,
+      bottom: r.bottom,
+      right: r.right,
+      sceneBottom: scene.bottom,
+      sceneRight: scene.right,
+      size: parseFloat(getComputedStyle(el).fontSize),
+    };
+  });
+  expect(card.bottom - card.top).toBeLessThanOrEqual(100);
+  expect(card.sceneBottom - card.bottom).toBeLessThanOrEqual(8);
+  expect(card.sceneRight - card.right).toBeGreaterThanOrEqual(48);
+  expect(card.size).toBeGreaterThanOrEqual(13);
   const stick = (await g.page.getByRole('slider', { name: 'stick: dive, rise, ahead, astern' }).boundingBox())!;
   const cx = stick.x + stick.width / 2,
     cy = stick.y + stick.height / 2;
