@@ -45,6 +45,7 @@ import { SUBMARINE, SUBMARINE_NEUTRAL_FILL, type SubmarineHandles, seabedHeight,
 import { Graphics, Text } from 'pixi.js';
 import {
   BEACON_CATCH,
+  BRAKE_HINT_COURSE,
   beaconLabel,
   beaconName,
   catchesBeacon,
@@ -206,19 +207,13 @@ let aimSwitchedAt = Number.NEGATIVE_INFINITY;
 /**
  * The pointer label's brake hint when the boat comes in on its target (./beacons.ts letGoHint): at
  * which of the label's own "N m ahead" figures to let go of Ahead so that the glide (./helm.ts
- * coastDistance, from the speed and throttle now) stops the bow on the beacon, "let go now" there,
+ * coastDistance, from the speed and throttle now) stops the hull abeam the beacon (./beacons.ts LET_GO_SHORT), "let go now" there,
  * or "Astern now to stop" once a glide would carry the boat past it.
  */
 /** The hint shows while the target is at most this far ahead along the heading, m, ... */
 const BRAKE_HINT_RANGE = 40;
-/** ... and the boat goes ahead faster than this, m/s, ... */
+/** ... and the boat goes ahead faster than this, m/s, on a course within ./beacons.ts BRAKE_HINT_COURSE of the target. */
 const BRAKE_HINT_SPEED = 2.5;
-/**
- * ... on a course (the line of its velocity) that passes this close to the target, m: within the
- * catch ring (BEACON_CATCH) and half as much again. A boat on the surface above a target 26 m or
- * more down glides over it, so the hint would not apply.
- */
-const BRAKE_HINT_COURSE = 1.5 * BEACON_CATCH;
 /** Times the hint comes on in a page, at most (one per beacon of a default course: a newcomer's lesson, not a nag). */
 const BRAKE_HINT_MAX = 6;
 /** Times the brake hint came on, and whether it shows now. */
