@@ -355,9 +355,19 @@ export function beaconName(index: number): string {
 
 /**
  * Where the brake hint aims the boat to stop: its centre this far short of the beacon along the
- * heading, m (half the hull: the bow on the beacon, well inside the catch ring).
+ * heading, m: 0, the hull abeam the beacon, so that a boat whose course passes up to
+ * `BRAKE_HINT_COURSE` above or below the beacon stops with its side inside the catch ring (a stop
+ * with the bow on the beacon leaves a boat passing 10 m off it with its hull 0.8 m outside the ring).
+ * A boat coming in level touches the ring with its bow long before and collects it on the way.
  */
-export const LET_GO_SHORT = SUBMARINE.length / 2;
+export const LET_GO_SHORT = 0;
+/**
+ * The brake hint is given on a course (the line of the boat's velocity) that passes at most this
+ * close to the target, m: 9, the catch ring (BEACON_CATCH) and half the hull's height less 0.5 m,
+ * so that a glide stopped abeam the beacon (`LET_GO_SHORT`) ends with the hull inside the ring. A
+ * course further off must first dive or rise to the beacon.
+ */
+export const BRAKE_HINT_COURSE = BEACON_CATCH + SUBMARINE.height / 2 - 0.5;
 /** The hint says "let go now" while the glide overshoots its aim by at most this, m, or falls short by at most `LET_GO_EARLY`. */
 export const LET_GO_LATE = 3;
 /** See `LET_GO_LATE`: how far short of its aim a glide may stop while the hint says "let go now", m. */

@@ -45,6 +45,7 @@ import { SUBMARINE, SUBMARINE_NEUTRAL_FILL, type SubmarineHandles, seabedHeight,
 import { Graphics, Text } from 'pixi.js';
 import {
   BEACON_CATCH,
+  BRAKE_HINT_COURSE,
   beaconLabel,
   beaconName,
   catchesBeacon,
@@ -206,19 +207,13 @@ let aimSwitchedAt = Number.NEGATIVE_INFINITY;
 /**
  * The pointer label's brake hint when the boat comes in on its target (./beacons.ts letGoHint): at
  * which of the label's own "N m ahead" figures to let go of Ahead so that the glide (./helm.ts
- * coastDistance, from the speed and throttle now) stops the bow on the beacon, "let go now" there,
+ * coastDistance, from the speed and throttle now) stops the hull abeam the beacon (./beacons.ts LET_GO_SHORT), "let go now" there,
  * or "Astern now to stop" once a glide would carry the boat past it.
  */
 /** The hint shows while the target is at most this far ahead along the heading, m, ... */
 const BRAKE_HINT_RANGE = 40;
-/** ... and the boat goes ahead faster than this, m/s, ... */
+/** ... and the boat goes ahead faster than this, m/s, on a course within ./beacons.ts BRAKE_HINT_COURSE of the target. */
 const BRAKE_HINT_SPEED = 2.5;
-/**
- * ... on a course (the line of its velocity) that passes this close to the target, m: within the
- * catch ring (BEACON_CATCH) and half as much again. A boat on the surface above a target 26 m or
- * more down glides over it, so the hint would not apply.
- */
-const BRAKE_HINT_COURSE = 1.5 * BEACON_CATCH;
 /** Times the hint comes on in a page, at most (one per beacon of a default course: a newcomer's lesson, not a nag). */
 const BRAKE_HINT_MAX = 6;
 /** Times the brake hint came on, and whether it shows now. */
@@ -1623,6 +1618,14 @@ function dismissTouchHint(): void {
   setTimeout(() => hint.remove(), 700);
 }
 addEventListener('pointerdown', dismissTouchHint, true);
+// The touch hint made small and put low at the scene's left, over the seabed and clear of the depth
+// ruler and its figures (52 px: GAUGE_WIDTH and its tags; game-kit's 14 px card, centred, covered the bottom fifth of a phone's sea, the ruler's
+// figures included), its type still 13 px.
+const touchHintStyle = document.createElement('style');
+touchHintStyle.textContent =
+  'body .bp-touch-hint { font: 13px/1.3 system-ui, sans-serif; padding: 4px 8px; bottom: 3px; left: 3px; transform: none;' +
+  ' max-width: calc(100% - 52px); border-radius: 8px; }';
+document.head.append(touchHintStyle);
 createButtonBar(
   [
     { label: 'Nose ↘', name: 'nose down', key: 'q' },
@@ -1879,6 +1882,8 @@ function drawDepthGauge(W: number, H: number, depth: number, order: number, bed:
     mark.visible = Math.abs(mark.y - yb) > 14;
   }
   for (let i = n; i < gaugeMarks.length; i++) gaugeMarks[i]!.visible = false;
+  // The ruler's left edge: its widest figure (shown or not, so the edge holds still as they hide) and the ticks.
+  gauge_.rulerLeft = Math.min(x0 - 4, ...gaugeMarks.slice(0, n).map((m) => m.x - m.width)) - 3;
   if (!gaugeDepth) {
     gaugeDepth = gaugeText(compact ? 14 : 12);
     gaugeDepth.style.fill = 0xffe066;
@@ -2079,7 +2084,8 @@ function drawEdgeMarks(W: number, H: number, k: number, cx: number, sy: (y: numb
     text.text = `${m.kind === 'ridge' ? 'ridge ' : ''}${Math.max(0, m.ahead).toFixed(0)} m`;
     text.style.fill = m.kind === 'mine' ? 0xffc2b3 : 0xf3dcae;
     // The arrow's tip at the edge, the icon inside it, the words inside the icon.
-    const tip = heading > 0 ? W - GAUGE_WIDTH - 6 : 6,
+    // Ahead, the tip stops short of the ruler's figures (the chips drawn over "50", "100" on a phone).
+    const tip = heading > 0 ? Math.min(W - GAUGE_WIDTH, gauge_.rulerLeft) - 6 : 6,
       icon = tip - heading * 22,
       w = text.width + 38,
       h = Math.max(24, text.height + 8);
@@ -2117,7 +2123,7 @@ function drawEdgeMarks(W: number, H: number, k: number, cx: number, sy: (y: numb
 }
 
 /** The depth gauge's tags as last drawn (tests): the boat's depth and the target's, each x, y, width, height, px (zeros while hidden). */
-const gauge_ = { depth: [0, 0, 0, 0], target: [0, 0, 0, 0] };
+const gauge_ = { depth: [0, 0, 0, 0], target: [0, 0, 0, 0], rulerLeft: Number.POSITIVE_INFINITY };
 
 /** The box of a gauge figure or tag (anchored at its right middle): x, y, width, height, px. */
 function textBox(text: Text): [number, number, number, number] {
@@ -3242,6 +3248,8 @@ shell.expose({
     targetText: gaugeTarget?.visible ? gaugeTarget.text : '',
     /** The live mines in view: each one's halo box (x, y, width, height, px), which the tags keep off. */
     mines: mineBoxes.map((b) => [...b]),
+    /** The depth ruler's left edge with its figures, px (the edge marks keep left of it). */
+    rulerLeft: gauge_.rulerLeft,
   }),
   /** The words drawn on the scene now (the gauge's, the ladder's, the tags, the marks): each one's text and type size, CSS px. */
   sceneTexts: () =>
