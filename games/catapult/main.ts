@@ -69,7 +69,7 @@ import {
   mixColor,
   SHOT_COLOR,
 } from './look';
-import { fullPullPx as fullPullFor } from './pull';
+import { fullPullPx as fullPullFor, type InsetPlace, insetBesidePull } from './pull';
 import {
   angleForRange,
   buildLevel,
@@ -1813,8 +1813,22 @@ let closeShown: { box: [number, number, number, number]; zoom: number; src: [num
 let closeDraws = 0;
 /** Whether the close-up shows in the earth while the player aims (drawAim then keeps the aim's numbers out of the earth). */
 let closeWhileAiming = false;
-/** The castle's inset's width and top while the player last aimed, px: kept while a throw is followed (drawCloseUp). */
-let insetHeld: { bw: number; by: number } | null = null;
+/** The castle's inset's width, left and top while the player last aimed, px: kept while a throw is followed (drawCloseUp). */
+let insetHeld: { bw: number; bx: number; by: number } | null = null;
+/** Where the inset stands aside from the pull being made (pullInset), px; null when no pull moved it. */
+let insetAside: InsetPlace | null = null;
+/**
+ * While a pull is under way, where the castle's inset (w x h px at scale 1, usually at scale `zoom`)
+ * stands in the earth's band `slot` clear of the pull's band (./pull insetBesidePull); null where
+ * no pull is under way or it does not cross the inset's usual place. Kept while the pull does not
+ * cross it, so a moving finger does not resize the inset every frame.
+ */
+function pullInset(slot: [number, number], w: number, h: number, zoom: number): InsetPlace | null {
+  if (!aim.active) return (insetAside = null);
+  const [ex, ey] = aimEnd();
+  insetAside = insetBesidePull([aim.x0, aim.y0, ex, ey], slot, renderer.camera.width, w, h, zoom, CLOSE_MAX, insetAside);
+  return insetAside;
+}
 /** Whether the close-up sits in the earth under the ground (out of a pull's way), not in the sky. */
 let closeLow = false;
 /**
@@ -1927,7 +1941,9 @@ function drawCloseUp(): void {
     // While a throw is followed the inset keeps its size and place from the aim (the follow view rises
     // with a high stone, which would shrink the earth's band and the inset with it, frame by frame).
     const held = inset && shotView ? insetHeld : null;
-    const zoom = held ? held.bw / w : zoomIn(slot);
+    // While a pull's band crosses the inset, it moves beside or under the band (pullInset).
+    const moved = inset && !held ? pullInset(slot, w, h, zoomIn(slot)) : null;
+    const zoom = held ? held.bw / w : moved ? moved.zoom : zoomIn(slot);
     // Shown when it magnifies enough, or whenever the castle is off the screen (upright, the aim view
     // frames the catapult: the close-up is where the castle shows).
     if (inset ? zoom > 0 : zoom >= CLOSE_MIN || (zoom > 0.5 && sx + w > cam.width)) {
@@ -1968,9 +1984,9 @@ function drawCloseUp(): void {
       // Next to the ground: low in the sky's band (at the band's top it would hang under the banner
       // with a screen of empty sky between it and the castle), high in the earth's (it stays put when the
       // card under it goes).
-      const bx = Math.round((cam.width - bw) / 2),
-        by = held ? held.by : Math.round(closeLow ? top : Math.max(top, bottom - bh));
-      if (inset && !shotView) insetHeld = { bw, by };
+      const bx = held ? held.bx : moved ? moved.bx : Math.round((cam.width - bw) / 2),
+        by = held ? held.by : moved ? moved.by : Math.round(closeLow ? top : Math.max(top, bottom - bh));
+      if (inset && !shotView) insetHeld = { bw, bx, by };
       closeSprite.position.set(bx, by);
       closeFrame
         .clear()

@@ -144,12 +144,32 @@ describe('catapult on a phone held upright (390 x 844, touch)', () => {
     for (let i = 0; i <= 8; i++) path.push([x0 - (len * Math.cos(Math.PI / 6) * i) / 8, y0 + (len * Math.sin(Math.PI / 6) * i) / 8]);
     expect(path[8]![0]).toBeGreaterThan(box.x + 20);
     let shown = { power: 0, angle: 0, text: '' };
+    // The most of the pull's band (press to finger) inside the castle's inset, px, over the pull.
+    let overlap = 0;
     await touchPath(p.page, path, 150, async () => {
       shown = await p.page.evaluate(() => ({
         ...(window.game as unknown as Game).aimShown(),
         text: document.querySelector('[data-hud="aim"]')?.textContent ?? '',
       }));
+      const inside = await p.page.evaluate(() => {
+        const w = window.game as unknown as Game;
+        const c = w.closeUp(),
+          [x0, y0, x1, y1] = w.aimLabelAt().band as [number, number, number, number];
+        if (!c) return 0;
+        const [bx, by, bw, bh] = c.box;
+        let n = 0;
+        for (let i = 0; i <= 100; i++) {
+          const x = x0 + ((x1 - x0) * i) / 100,
+            y = y0 + ((y1 - y0) * i) / 100;
+          if (x >= bx && x <= bx + bw && y >= by && y <= by + bh) n++;
+        }
+        return (n / 101) * Math.hypot(x1 - x0, y1 - y0);
+      });
+      overlap = Math.max(overlap, inside);
     });
+    // The inset stands clear of the pull (./pull insetBesidePull; to the 1 % of the band sampled): the
+    // band ran 170 px through the inset and over its label.
+    expect(overlap).toBeLessThanOrEqual(2);
     // The readout says full power (1 % of 21 m/s is 0.2 m/s: the tolerance of one pixel's rounding).
     expect(shown.power, JSON.stringify(shown)).toBeGreaterThanOrEqual(0.99);
     expect(shown.text, JSON.stringify(shown)).toMatch(/\b(99|100) %/);
