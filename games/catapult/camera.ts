@@ -193,6 +193,17 @@ export function uprightAimView(f: Field, width: number, height: number): View {
   return uprightView(f, AIM_LEFT, Math.max(right, LAUNCH.x + 2), width, height);
 }
 
+/**
+ * Upright, a level's opening look (`OPENING_FRAMES`): the catapult and the castle together, from
+ * AIM_LEFT to 1 m past the rock, the lowest surface UPRIGHT_GROUND of the way up. Opened on the
+ * castle's view alone (its ground half-way up) a phone showed the targets over 300 px of plain earth
+ * and no catapult; the camera then closes in on the catapult for the aim.
+ * @throws RangeError if the screen's size is not positive.
+ */
+export function uprightOpeningView(f: Field, width: number, height: number): View {
+  return uprightView(f, AIM_LEFT, rockRight(f.castleMaxX) + 1, width, height, UPRIGHT_GROUND);
+}
+
 /** Upright, the castle's view: the castle, the rock behind it and room for debris (0.8 m before, 1 m past the rock). */
 export function uprightCastleView(f: Field, width: number, height: number): View {
   return uprightView(f, f.castleMinX - 0.8, rockRight(f.castleMaxX) + 1, width, height);

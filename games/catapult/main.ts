@@ -48,6 +48,7 @@ import {
   uprightAimView,
   uprightCastleView,
   uprightFollowView,
+  uprightOpeningView,
   type View,
   type WideViews,
   wideViews,
@@ -684,7 +685,15 @@ function frameCamera(): void {
   // view is the whole field (an upright tablet). (Not where the aim view is close on the catapult
   // and the castle's inset shows in the earth, drawCloseUp: it is the look.)
   showLook(upright() && !levelEnded && !shotView && (peeking || (shot === 'aim' && !aimCloseUp(field(), cam.width, cam.height))));
-  const target = shot === 'castle' ? shotViewRect() : shot === 'follow' ? followView() : aimView();
+  // (The opening look: the catapult and the castle together, ./camera uprightOpeningView.)
+  const target =
+    shot === 'castle'
+      ? opens && !peeking
+        ? uprightOpeningView(field(), cam.width, cam.height)
+        : shotViewRect()
+      : shot === 'follow'
+        ? followView()
+        : aimView();
   const size = `${cam.width}x${cam.height}`;
   const k = size === framedFor ? 0.1 : 1;
   if (size !== framedFor) sizesFramed.add(size);
