@@ -43,9 +43,10 @@ export interface CameraInput {
 
 /**
  * Upright where the aim view is close on the catapult (`aimCloseUp`), a new level opens on the
- * castle's view for this many frames (0.67 s at 60 frames a second), and the camera then pans to the
- * catapult: the player sees what they shoot at, large, and where it lies from the catapult, before
- * the castle shrinks to the inset while they aim. (A level opened on the castle alone, held until the
+ * catapult and the castle together (`uprightOpeningView`; the shot is 'castle') for this many frames
+ * (0.67 s at 60 frames a second), and the camera then closes in on the catapult: the player sees
+ * what they shoot at and where it lies from the catapult, before the castle shrinks to the inset
+ * while they aim. (A level opened on the castle alone, held until the
  * first drag, showed a target with nothing to shoot it from.) A touch ends it at once.
  */
 export const OPENING_FRAMES = 40;

@@ -501,7 +501,7 @@ shell.onWorldChange(() => {
  * shows in the earth: ./camera uprightGround; the scene in the screen's lower middle, earth
  * under it for the card saying how to play and the next-level button). Which view it heads for is
  * decided in ./camera (cameraShot), and its rectangle there too: a level new to the page opens on
- * the castle's view (./camera OPENING_FRAMES) and pans to the aim view, close on the catapult (./camera uprightAimView: a large stone, band and arc) with the castle in
+ * the catapult and the castle together (./camera OPENING_FRAMES, uprightOpeningView) and closes in on the aim view, close on the catapult (./camera uprightAimView: a large stone, band and arc) with the castle in
  * an inset under the ground and an arrow at the screen's edge saying how far it is (the whole field
  * on a 390 px phone was a thin band, a stone 8 to 12 px, under a tall empty sky); on an upright
  * tablet, where the field is large enough, the aim view holds the catapult and the whole castle and
