@@ -43,9 +43,10 @@ export interface CameraInput {
 
 /**
  * Upright where the aim view is close on the catapult (`aimCloseUp`), a new level opens on the
- * castle's view for this many frames (0.67 s at 60 frames a second), and the camera then pans to the
- * catapult: the player sees what they shoot at, large, and where it lies from the catapult, before
- * the castle shrinks to the inset while they aim. (A level opened on the castle alone, held until the
+ * catapult and the castle together (`uprightOpeningView`; the shot is 'castle') for this many frames
+ * (0.67 s at 60 frames a second), and the camera then closes in on the catapult: the player sees
+ * what they shoot at and where it lies from the catapult, before the castle shrinks to the inset
+ * while they aim. (A level opened on the castle alone, held until the
  * first drag, showed a target with nothing to shoot it from.) A touch ends it at once.
  */
 export const OPENING_FRAMES = 40;
@@ -191,6 +192,17 @@ export function uprightAimView(f: Field, width: number, height: number): View {
   const span = Math.min(Math.max(width / AIM_CLOSE_PX_PER_M_MAX, reach), width / AIM_PX_PER_M);
   const right = Math.min(AIM_LEFT + span, f.castleMinX - AIM_SHORT);
   return uprightView(f, AIM_LEFT, Math.max(right, LAUNCH.x + 2), width, height);
+}
+
+/**
+ * Upright, a level's opening look (`OPENING_FRAMES`): the catapult and the castle together, from
+ * AIM_LEFT to 1 m past the rock, the lowest surface UPRIGHT_GROUND of the way up. Opened on the
+ * castle's view alone (its ground half-way up) a phone showed the targets over 300 px of plain earth
+ * and no catapult; the camera then closes in on the catapult for the aim.
+ * @throws RangeError if the screen's size is not positive.
+ */
+export function uprightOpeningView(f: Field, width: number, height: number): View {
+  return uprightView(f, AIM_LEFT, rockRight(f.castleMaxX) + 1, width, height, UPRIGHT_GROUND);
 }
 
 /** Upright, the castle's view: the castle, the rock behind it and room for debris (0.8 m before, 1 m past the rock). */

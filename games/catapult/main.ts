@@ -48,6 +48,7 @@ import {
   uprightAimView,
   uprightCastleView,
   uprightFollowView,
+  uprightOpeningView,
   type View,
   type WideViews,
   wideViews,
@@ -69,7 +70,7 @@ import {
   mixColor,
   SHOT_COLOR,
 } from './look';
-import { fullPullPx as fullPullFor } from './pull';
+import { fullPullPx as fullPullFor, type InsetPlace, insetBesidePull } from './pull';
 import {
   angleForRange,
   buildLevel,
@@ -500,7 +501,7 @@ shell.onWorldChange(() => {
  * shows in the earth: ./camera uprightGround; the scene in the screen's lower middle, earth
  * under it for the card saying how to play and the next-level button). Which view it heads for is
  * decided in ./camera (cameraShot), and its rectangle there too: a level new to the page opens on
- * the castle's view (./camera OPENING_FRAMES) and pans to the aim view, close on the catapult (./camera uprightAimView: a large stone, band and arc) with the castle in
+ * the catapult and the castle together (./camera OPENING_FRAMES, uprightOpeningView) and closes in on the aim view, close on the catapult (./camera uprightAimView: a large stone, band and arc) with the castle in
  * an inset under the ground and an arrow at the screen's edge saying how far it is (the whole field
  * on a 390 px phone was a thin band, a stone 8 to 12 px, under a tall empty sky); on an upright
  * tablet, where the field is large enough, the aim view holds the catapult and the whole castle and
@@ -684,7 +685,15 @@ function frameCamera(): void {
   // view is the whole field (an upright tablet). (Not where the aim view is close on the catapult
   // and the castle's inset shows in the earth, drawCloseUp: it is the look.)
   showLook(upright() && !levelEnded && !shotView && (peeking || (shot === 'aim' && !aimCloseUp(field(), cam.width, cam.height))));
-  const target = shot === 'castle' ? shotViewRect() : shot === 'follow' ? followView() : aimView();
+  // (The opening look: the catapult and the castle together, ./camera uprightOpeningView.)
+  const target =
+    shot === 'castle'
+      ? opens && !peeking
+        ? uprightOpeningView(field(), cam.width, cam.height)
+        : shotViewRect()
+      : shot === 'follow'
+        ? followView()
+        : aimView();
   const size = `${cam.width}x${cam.height}`;
   const k = size === framedFor ? 0.1 : 1;
   if (size !== framedFor) sizesFramed.add(size);
@@ -1813,8 +1822,22 @@ let closeShown: { box: [number, number, number, number]; zoom: number; src: [num
 let closeDraws = 0;
 /** Whether the close-up shows in the earth while the player aims (drawAim then keeps the aim's numbers out of the earth). */
 let closeWhileAiming = false;
-/** The castle's inset's width and top while the player last aimed, px: kept while a throw is followed (drawCloseUp). */
-let insetHeld: { bw: number; by: number } | null = null;
+/** The castle's inset's width, left and top while the player last aimed, px: kept while a throw is followed (drawCloseUp). */
+let insetHeld: { bw: number; bx: number; by: number } | null = null;
+/** Where the inset stands aside from the pull being made (pullInset), px; null when no pull moved it. */
+let insetAside: InsetPlace | null = null;
+/**
+ * While a pull is under way, where the castle's inset (w x h px at scale 1, usually at scale `zoom`)
+ * stands in the earth's band `slot` clear of the pull's band (./pull insetBesidePull); null where
+ * no pull is under way or it does not cross the inset's usual place. Kept while the pull does not
+ * cross it, so a moving finger does not resize the inset every frame.
+ */
+function pullInset(slot: [number, number], w: number, h: number, zoom: number): InsetPlace | null {
+  if (!aim.active) return (insetAside = null);
+  const [ex, ey] = aimEnd();
+  insetAside = insetBesidePull([aim.x0, aim.y0, ex, ey], slot, renderer.camera.width, w, h, zoom, CLOSE_MAX, insetAside);
+  return insetAside;
+}
 /** Whether the close-up sits in the earth under the ground (out of a pull's way), not in the sky. */
 let closeLow = false;
 /**
@@ -1927,7 +1950,9 @@ function drawCloseUp(): void {
     // While a throw is followed the inset keeps its size and place from the aim (the follow view rises
     // with a high stone, which would shrink the earth's band and the inset with it, frame by frame).
     const held = inset && shotView ? insetHeld : null;
-    const zoom = held ? held.bw / w : zoomIn(slot);
+    // While a pull's band crosses the inset, it moves beside or under the band (pullInset).
+    const moved = inset && !held ? pullInset(slot, w, h, zoomIn(slot)) : null;
+    const zoom = held ? held.bw / w : moved ? moved.zoom : zoomIn(slot);
     // Shown when it magnifies enough, or whenever the castle is off the screen (upright, the aim view
     // frames the catapult: the close-up is where the castle shows).
     if (inset ? zoom > 0 : zoom >= CLOSE_MIN || (zoom > 0.5 && sx + w > cam.width)) {
@@ -1968,9 +1993,9 @@ function drawCloseUp(): void {
       // Next to the ground: low in the sky's band (at the band's top it would hang under the banner
       // with a screen of empty sky between it and the castle), high in the earth's (it stays put when the
       // card under it goes).
-      const bx = Math.round((cam.width - bw) / 2),
-        by = held ? held.by : Math.round(closeLow ? top : Math.max(top, bottom - bh));
-      if (inset && !shotView) insetHeld = { bw, by };
+      const bx = held ? held.bx : moved ? moved.bx : Math.round((cam.width - bw) / 2),
+        by = held ? held.by : moved ? moved.by : Math.round(closeLow ? top : Math.max(top, bottom - bh));
+      if (inset && !shotView) insetHeld = { bw, bx, by };
       closeSprite.position.set(bx, by);
       closeFrame
         .clear()

@@ -93,12 +93,19 @@ const across = () =>
 describe('catapult on a phone held upright (390 x 844, touch)', () => {
   it('a new level opens on its whole castle, then pans to the catapult; a retry opens on the catapult; a touch ends the opening', async () => {
     // Level 3 (the farthest castle), new to the page: its first frame shows the castle whole and
-    // not the catapult (the aim view is close on the catapult, the castle only in an inset).
+    // the catapult (./camera uprightOpeningView; the aim view is close on the catapult, the castle
+    // only in an inset), with at most 30 % of the canvas earth under the ground (it opened on the
+    // castle alone over the canvas's lower half of earth: 394 of 788 px).
     await startLevel(3);
     await p.runFrames(1);
     expect(await p.page.evaluate(() => (window.game as unknown as Game).cameraShot())).toBe('castle');
     const first = await across();
-    expect([first.castle[0]! >= 0, first.castle[1]! <= first.W, first.catapult < 0], JSON.stringify(first)).toEqual([true, true, true]);
+    expect([first.castle[0]! >= 0, first.castle[1]! <= first.W, first.catapult > 0], JSON.stringify(first)).toEqual([true, true, true]);
+    const earth = await p.page.evaluate(() => {
+      const cam = (window.game as unknown as Game).renderer.camera;
+      return (cam.height - cam.toScreenY(0)) / cam.height;
+    });
+    expect(earth).toBeLessThanOrEqual(0.3);
     // Held, then the pan to the catapult: at rest on the aim view after the opening's frames and the
     // easing (a tenth of the way a frame: about 60 frames to within 1 cm), the castle off the screen
     // and its inset showing.
@@ -144,12 +151,32 @@ describe('catapult on a phone held upright (390 x 844, touch)', () => {
     for (let i = 0; i <= 8; i++) path.push([x0 - (len * Math.cos(Math.PI / 6) * i) / 8, y0 + (len * Math.sin(Math.PI / 6) * i) / 8]);
     expect(path[8]![0]).toBeGreaterThan(box.x + 20);
     let shown = { power: 0, angle: 0, text: '' };
+    // The most of the pull's band (press to finger) inside the castle's inset, px, over the pull.
+    let overlap = 0;
     await touchPath(p.page, path, 150, async () => {
       shown = await p.page.evaluate(() => ({
         ...(window.game as unknown as Game).aimShown(),
         text: document.querySelector('[data-hud="aim"]')?.textContent ?? '',
       }));
+      const inside = await p.page.evaluate(() => {
+        const w = window.game as unknown as Game;
+        const c = w.closeUp(),
+          [x0, y0, x1, y1] = w.aimLabelAt().band as [number, number, number, number];
+        if (!c) return 0;
+        const [bx, by, bw, bh] = c.box;
+        let n = 0;
+        for (let i = 0; i <= 100; i++) {
+          const x = x0 + ((x1 - x0) * i) / 100,
+            y = y0 + ((y1 - y0) * i) / 100;
+          if (x >= bx && x <= bx + bw && y >= by && y <= by + bh) n++;
+        }
+        return (n / 101) * Math.hypot(x1 - x0, y1 - y0);
+      });
+      overlap = Math.max(overlap, inside);
     });
+    // The inset stands clear of the pull (./pull insetBesidePull; to the 1 % of the band sampled): the
+    // band ran 170 px through the inset and over its label.
+    expect(overlap).toBeLessThanOrEqual(2);
     // The readout says full power (1 % of 21 m/s is 0.2 m/s: the tolerance of one pixel's rounding).
     expect(shown.power, JSON.stringify(shown)).toBeGreaterThanOrEqual(0.99);
     expect(shown.text, JSON.stringify(shown)).toMatch(/\b(99|100) %/);

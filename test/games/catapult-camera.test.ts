@@ -28,6 +28,7 @@ import {
   uprightCastleView,
   uprightFieldView,
   uprightFollowView,
+  uprightOpeningView,
   uprightView,
   type View,
   wideViews,
@@ -242,5 +243,23 @@ describe('catapult camera', () => {
     expect(() => uprightView(f, 5, 5, 390, 844)).toThrow(/uprightView: maxX .* got 5/);
     expect(() => uprightView(f, 0, 10, 0, 844)).toThrow(/uprightView: the screen .* got 0 x 844/);
     expect(() => uprightFollowView(f, 0, 1, 390, 0)).toThrow(/uprightFollowView: the screen .* got 390 x 0/);
+  });
+});
+
+describe('catapult upright opening view', () => {
+  it("a phone's opening look holds the catapult and the castle with its rock, the ground 28 % up", () => {
+    // Levels 1 and 3's castles (near and far), on a 390 x 788 canvas.
+    for (const f of [
+      { castleMinX: 8, castleMaxX: 12.5, castleTop: 2.5, floor: 0 },
+      { castleMinX: 15, castleMaxX: 18, castleTop: 4, floor: 0 },
+    ]) {
+      const v = uprightOpeningView(f, 390, 788);
+      // The catapult with its stones (x -3.0 to 1.1 m) and the rock's right face.
+      expect(v.minX).toBeLessThanOrEqual(-3.0);
+      expect(v.maxX).toBeGreaterThanOrEqual(rockRight(f.castleMaxX));
+      // The earth under the ground: 28 % of the canvas (221 px), the castle's view had 50 % (394 px).
+      expect((0 - v.minY) / (v.maxY - v.minY)).toBeCloseTo(UPRIGHT_GROUND, 6);
+      expect(v.maxY).toBeGreaterThan(f.castleTop);
+    }
   });
 });
