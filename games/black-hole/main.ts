@@ -1468,9 +1468,13 @@ function drawLevelBanner(): void {
   // Laid out while due even once faded, so the page hooks report its text and place.
   levelBanner.visible = true;
   levelBanner.alpha = age < BANNER_MS ? 1 : Math.max(0, 1 - (age - BANNER_MS) / BANNER_FADE_MS);
+  const cam = renderer.camera;
+  if (cam.toScreenLength(playField.width) < NARROW_BANNER_PX) {
+    placeCompactBanner(run.spec);
+    return;
+  }
   const text = `Level ${run.spec.level}\n${levelNews(run.spec)}`;
   if (levelBanner.text !== text) levelBanner.text = text;
-  const cam = renderer.camera;
   const size = Math.max(18, Math.min(26, cam.toScreenLength(playField.width) / 14));
   const fit = (px: number): number => {
     if (levelBanner.style.fontSize !== px) {
@@ -1487,6 +1491,37 @@ function drawLevelBanner(): void {
   // Smaller where the band is short (a small window), down to 13 px.
   if (room > 0 && h > room) h = fit(Math.max(13, Math.floor((size * room) / h)));
   levelBanner.position.set(cam.toScreenX(playField.width / 2), room > 0 ? top + (room - h) / 2 : cam.toScreenY(bh.lineY) + 8);
+}
+
+/** A field narrower than this on screen (a phone's), px, gets the compact banner (`placeCompactBanner`). */
+const NARROW_BANNER_PX = 560;
+
+/**
+ * The banner on a narrow field (a phone's): one line, "Level N · P points", or two with the level's
+ * news where they fit, 14 px (13 px where 14 does not fit the width), in the band between the field's
+ * top edge and the finish line, so it never lies over the ship's path up from the pad (four lines of
+ * 26 px centred on the field sat right over it). The status line above the field says the level's aim
+ * in full.
+ */
+function placeCompactBanner(spec: LevelRun['spec']): void {
+  const cam = renderer.camera;
+  const width = cam.toScreenLength(playField.width) - 16;
+  const top = cam.toScreenY(playField.height),
+    room = cam.toScreenY(bh.lineY) - top - 4;
+  const head = `Level ${spec.level} · ${levelPoints(spec.level, 0).level} points`;
+  levelBanner.style.wordWrap = false;
+  const fit = (text: string, px: number): boolean => {
+    if (levelBanner.text !== text) levelBanner.text = text;
+    if (levelBanner.style.fontSize !== px) {
+      levelBanner.style.fontSize = px;
+      levelBanner.style.lineHeight = 1.2 * px;
+    }
+    return levelBanner.width <= width && levelBanner.height <= room;
+  };
+  const news = levelNews(spec).split('\n')[0]!;
+  const two = `${head}\n${news}`;
+  if (!(fit(two, 14) || fit(two, 13) || fit(head, 14))) fit(head, 13);
+  levelBanner.position.set(cam.toScreenX(playField.width / 2), top + Math.max(2, (room - levelBanner.height) / 2));
 }
 
 /** Draws the edges the ship is within EDGE_WARN m of, brighter the nearer, and shows the warning (off the holes and the path). */
