@@ -1507,7 +1507,7 @@ function drawLevelBanner(): void {
   levelBanner.visible = true;
   levelBanner.alpha = age < BANNER_MS ? 1 : Math.max(0, 1 - (age - BANNER_MS) / BANNER_FADE_MS);
   const cam = renderer.camera;
-  if (cam.toScreenLength(playField.width) < NARROW_BANNER_PX) {
+  if (playField.width < FIELD.width) {
     placeCompactBanner(run.spec);
     return;
   }
@@ -1531,11 +1531,8 @@ function drawLevelBanner(): void {
   levelBanner.position.set(cam.toScreenX(playField.width / 2), room > 0 ? top + (room - h) / 2 : cam.toScreenY(bh.lineY) + 8);
 }
 
-/** A field narrower than this on screen (a phone's), px, gets the compact banner (`placeCompactBanner`). */
-const NARROW_BANNER_PX = 560;
-
 /**
- * The banner on a narrow field (a phone's): one line, "Level N · P points", or two with the level's
+ * The banner on the narrow upright field (a phone's, `fieldForStage`): one line, "Level N · P points", or two with the level's
  * news where they fit, 14 px (13 px where 14 does not fit the width), in the band between the field's
  * top edge and the finish line, so it never lies over the ship's path up from the pad (four lines of
  * 26 px centred on the field sat right over it). The status line above the field says the level's aim
