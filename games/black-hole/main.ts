@@ -51,7 +51,7 @@ import { createPauseOverlay, startPixiGame } from '@bitphysics/game-kit/pixi';
 import { type PhysicsWorld, Rng, slotOf, stateHash } from '@bitphysics/physics';
 import { Container, Graphics, Sprite, Text, Texture } from 'pixi.js';
 import { canThrust, type LevelRun, levelPoints, previewSeconds, RING_RADIUS, startLevel } from './levels';
-import { releaseStep, TAP_STEPS } from './press-timing';
+import { MAX_LEAD_STEPS, pressStartStep, releaseStep, TAP_STEPS } from './press-timing';
 import { type BlackHoleReplay, createBlackHoleReplay, type GameStepEvent } from './replay';
 import {
   type Arrow,
@@ -325,8 +325,13 @@ const game = await startPixiGame({
   title: 'Black hole',
   createWorld,
   step: () => {
-    // A let-go arrow's thrust ends at its step (`release`; here, at a step, so it is recorded there).
-    if (!replay.player) endTaps();
+    lastStepMs = performance.now();
+    // A press made between two frames thrusts from its own step (`press`), and a let-go arrow's thrust
+    // ends at its step (`release`): here, at a step, so each is recorded there.
+    if (!replay.player) {
+      startPresses();
+      endTaps();
+    }
     // The ready moment after a respawn is over: arrows pressed during it thrust from this step.
     if (!replay.player && readyEndsAt > 0 && performance.now() >= readyEndsAt) endReady();
     replay.step();
@@ -489,6 +494,7 @@ function letGo(): void {
   held.length = 0;
   holds.clear();
   tapEnds.clear();
+  pressStarts.clear();
 }
 
 /**
@@ -502,6 +508,25 @@ const pressedAt = new Map<Arrow, { step: number; ms: number }>();
 const tapEnds = new Map<Arrow, number>();
 /** performance.now() when the game last resumed from a pause, ms: a press's length counts from it (no game time passes paused). */
 let resumedAt = 0;
+/** performance.now() when the last game step ran, ms: a press's start step counts from it (`press`). */
+let lastStepMs = 0;
+/**
+ * Arrows pressed between two frames whose thrust begins at a step not run yet (./press-timing.ts
+ * `pressStartStep`): the step at which each joins `held`.
+ */
+const pressStarts = new Map<Arrow, number>();
+/** Puts the pressed arrows whose start step has come into `held` (called at the start of every step). */
+function startPresses(): void {
+  if (pressStarts.size === 0) return;
+  for (const [dir, at] of pressStarts) {
+    if (bh.world.steps < at && at - bh.world.steps <= MAX_LEAD_STEPS) continue;
+    pressStarts.delete(dir);
+    const i = held.indexOf(dir);
+    if (i >= 0) held.splice(i, 1);
+    held.push(dir);
+  }
+  applyHeld();
+}
 /** Lets go of the let-go arrows whose steps are up (called at the start of every step). */
 function endTaps(): void {
   if (tapEnds.size === 0) return;
@@ -570,10 +595,22 @@ function advance(): void {
 const eventMs = (e: Event): number => (e.timeStamp > 0 && e.timeStamp <= performance.now() ? e.timeStamp : performance.now());
 /** A key or finger presses arrow `dir` at `ms` (performance.now() ms): it becomes the latest arrow held. */
 function press(dir: Arrow, ms: number): void {
-  // A tap in the ready moment thrusts its TAP_STEPS from the moment's end.
-  pressedAt.set(dir, { step: readying() ? READY_PENDING : bh.world.steps, ms });
+  // A tap in the ready moment thrusts its TAP_STEPS from the moment's end; a press between two frames
+  // from the step its moment falls in (`pressStartStep`), so it thrusts as at any frame rate.
+  const now = bh.world.steps;
+  const step = readying()
+    ? READY_PENDING
+    : game.shell.paused || replay.player
+      ? now
+      : pressStartStep(now, ms, Math.max(lastStepMs, resumedAt), bh.world.dt);
+  pressedAt.set(dir, { step, ms });
   // Pressed again while a tap of it thrusts on: the tap's hold becomes this press's.
   if (!tapEnds.delete(dir)) holds.set(dir, (holds.get(dir) ?? 0) + 1);
+  if (step > now && step < READY_PENDING) {
+    pressStarts.set(dir, step);
+    return;
+  }
+  pressStarts.delete(dir);
   const i = held.indexOf(dir);
   if (i >= 0) held.splice(i, 1);
   held.push(dir);
@@ -587,7 +624,7 @@ function press(dir: Arrow, ms: number): void {
  */
 function release(dir: Arrow, ms: number): void {
   const at = pressedAt.get(dir);
-  if ((holds.get(dir) ?? 0) === 1 && at && held.includes(dir) && !replay.player && !game.shell.paused) {
+  if ((holds.get(dir) ?? 0) === 1 && at && (held.includes(dir) || pressStarts.has(dir)) && !replay.player && !game.shell.paused) {
     const end =
       at.step >= READY_PENDING
         ? READY_PENDING + TAP_STEPS
@@ -605,6 +642,7 @@ function letGoOf(dir: Arrow): void {
   if (n > 1) holds.set(dir, n - 1);
   else {
     holds.delete(dir);
+    pressStarts.delete(dir);
     const i = held.indexOf(dir);
     if (i >= 0) held.splice(i, 1);
   }
@@ -1468,9 +1506,13 @@ function drawLevelBanner(): void {
   // Laid out while due even once faded, so the page hooks report its text and place.
   levelBanner.visible = true;
   levelBanner.alpha = age < BANNER_MS ? 1 : Math.max(0, 1 - (age - BANNER_MS) / BANNER_FADE_MS);
+  const cam = renderer.camera;
+  if (playField.width < FIELD.width) {
+    placeCompactBanner(run.spec);
+    return;
+  }
   const text = `Level ${run.spec.level}\n${levelNews(run.spec)}`;
   if (levelBanner.text !== text) levelBanner.text = text;
-  const cam = renderer.camera;
   const size = Math.max(18, Math.min(26, cam.toScreenLength(playField.width) / 14));
   const fit = (px: number): number => {
     if (levelBanner.style.fontSize !== px) {
@@ -1487,6 +1529,34 @@ function drawLevelBanner(): void {
   // Smaller where the band is short (a small window), down to 13 px.
   if (room > 0 && h > room) h = fit(Math.max(13, Math.floor((size * room) / h)));
   levelBanner.position.set(cam.toScreenX(playField.width / 2), room > 0 ? top + (room - h) / 2 : cam.toScreenY(bh.lineY) + 8);
+}
+
+/**
+ * The banner on the narrow upright field (a phone's, `fieldForStage`): one line, "Level N · P points", or two with the level's
+ * news where they fit, 14 px (13 px where 14 does not fit the width), in the band between the field's
+ * top edge and the finish line, so it never lies over the ship's path up from the pad (four lines of
+ * 26 px centred on the field sat right over it). The status line above the field says the level's aim
+ * in full.
+ */
+function placeCompactBanner(spec: LevelRun['spec']): void {
+  const cam = renderer.camera;
+  const width = cam.toScreenLength(playField.width) - 16;
+  const top = cam.toScreenY(playField.height),
+    room = cam.toScreenY(bh.lineY) - top - 4;
+  const head = `Level ${spec.level} · ${levelPoints(spec.level, 0).level} points`;
+  levelBanner.style.wordWrap = false;
+  const fit = (text: string, px: number): boolean => {
+    if (levelBanner.text !== text) levelBanner.text = text;
+    if (levelBanner.style.fontSize !== px) {
+      levelBanner.style.fontSize = px;
+      levelBanner.style.lineHeight = 1.2 * px;
+    }
+    return levelBanner.width <= width && levelBanner.height <= room;
+  };
+  const news = levelNews(spec).split('\n')[0]!;
+  const two = `${head}\n${news}`;
+  if (!(fit(two, 14) || fit(two, 13) || fit(head, 14))) fit(head, 13);
+  levelBanner.position.set(cam.toScreenX(playField.width / 2), top + Math.max(2, (room - levelBanner.height) / 2));
 }
 
 /** Draws the edges the ship is within EDGE_WARN m of, brighter the nearer, and shows the warning (off the holes and the path). */

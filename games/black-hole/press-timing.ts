@@ -56,3 +56,30 @@ export function releaseStep(pressStep: number, heldMs: number, stepsNow: number,
   const end = pressStep + Math.round(pressSteps(heldMs / (1000 * dt)));
   return Math.min(stepsNow + MAX_TAIL_STEPS, Math.max(stepsNow, end));
 }
+
+/**
+ * The most steps a press's start is put after the steps run when it came: the steps of one frame's
+ * burst at 15 frames a second. A press that comes longer after the last step (a stall the pacer does
+ * not make up) starts no later than this.
+ */
+export const MAX_LEAD_STEPS = 4;
+
+/**
+ * The step at which the thrust of a press made at `eventMs` (wall clock, ms) begins: `stepsNow` (the
+ * steps run) plus the whole steps of `dt` s from `stepMs` (the wall clock when the last of them ran,
+ * ms) to the press, at most MAX_LEAD_STEPS. The pacer runs the steps of a frame in a burst, so a press
+ * made between two frames of a slow page came that many steps after the last one run; begun at
+ * `stepsNow` it thrust up to a frame early, by a different amount each time, and the same key timings
+ * flew a different path at 20, 30 or 60 frames a second.
+ * @throws RangeError unless stepsNow is an integer >= 0, eventMs and stepMs are finite and dt > 0 is finite.
+ */
+export function pressStartStep(stepsNow: number, eventMs: number, stepMs: number, dt: number): number {
+  if (
+    !(Number.isInteger(stepsNow) && stepsNow >= 0 && Number.isFinite(eventMs) && Number.isFinite(stepMs) && dt > 0 && Number.isFinite(dt))
+  )
+    throw new RangeError(
+      `pressStartStep: stepsNow must be an integer >= 0, the times finite and dt > 0, got ${stepsNow}, ${eventMs}, ${stepMs}, ${dt}`,
+    );
+  const lead = Math.floor((eventMs - stepMs) / (1000 * dt) + 1e-9);
+  return stepsNow + Math.min(MAX_LEAD_STEPS, Math.max(0, lead));
+}

@@ -862,6 +862,27 @@ describe.each([
         ];
       });
       expect(overlaps).toEqual([]);
+      // The level's title is compact (at most two lines of 13 px or more) and lies between the field's
+      // top edge and the finish line, off the ship's path up from the pad: four lines of 26 px
+      // centred on the field sat right over it. 1 px of slack for the text's rounding.
+      const title = await p.waitFor(() => {
+        type Cam = { toScreenY(y: number): number };
+        const w = window.game as unknown as {
+          renderer: { camera: Cam };
+          bh: { lineY: number; field: { height: number } };
+          levelBanner(): string;
+          levelBannerBox(): number[];
+        };
+        const text = w.levelBanner();
+        if (!text) return null;
+        const [, top, , bottom] = w.levelBannerBox();
+        const cam = w.renderer.camera;
+        return { text, top: top!, bottom: bottom!, fieldTop: cam.toScreenY(w.bh.field.height), line: cam.toScreenY(w.bh.lineY) };
+      }, null);
+      expect(title.text.split('\n').length, title.text).toBeLessThanOrEqual(2);
+      expect(title.top, title.text).toBeGreaterThanOrEqual(title.fieldTop - 1);
+      expect(title.bottom, title.text).toBeLessThanOrEqual(title.line + 1);
+      expect((title.bottom - title.top) / title.text.split('\n').length, title.text).toBeGreaterThanOrEqual(13);
     }
     type Bh = { bh: { thrust: string }; shipPx(): number };
     if (touch) {

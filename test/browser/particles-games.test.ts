@@ -769,8 +769,10 @@ describe('black hole', () => {
     expect(up.thrust).toBe('up');
     expect(up.s[1]).toBeGreaterThan(v0[1]!);
     // Two arrows held thrust diagonally: right while up is held gives up-right.
+    // A press thrusts from the step its moment falls in, at most 4 steps after the last one run
+    // (games/black-hole/press-timing.ts pressStartStep): within 10 frames.
     await g.page.keyboard.down('ArrowRight');
-    expect(await g.page.evaluate(() => (window.game as unknown as BlackHoleGameHandle).bh.thrust)).toBe('up-right');
+    await g.runUntil(() => (window.game as unknown as BlackHoleGameHandle).bh.thrust === 'up-right', null, { maxFrames: 10 });
     const right = await g.waitFor(
       () => {
         const s = (window.game as unknown as BlackHoleGameHandle).ship();
@@ -796,7 +798,8 @@ describe('black hole', () => {
     const box = (await button.boundingBox())!;
     await g.page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
     await g.page.mouse.down();
-    expect(await g.page.evaluate(() => (window.game as unknown as BlackHoleGameHandle).bh.thrust)).toBe('left');
+    // From the step the press's moment falls in, at most 4 steps on (pressStartStep): within 10 frames.
+    await g.runUntil(() => (window.game as unknown as BlackHoleGameHandle).bh.thrust === 'left', null, { maxFrames: 10 });
     await g.waitFor(() => (window.game as unknown as BlackHoleGameHandle).ship()[2]! < -0.5, null, 30_000);
     await g.page.mouse.up();
     expect(await thrustAfterRelease(g)).toBe('none');

@@ -8,8 +8,24 @@
 
 import { slotOf } from '@bitphysics/physics';
 import { describe, expect, test } from 'vitest';
-import { MAX_TAIL_STEPS, pressSteps, releaseStep, TAP_BLEND_STEPS, TAP_STEPS } from '../../games/black-hole/press-timing';
-import { createBlackHoleGame, rampThrust, setThrust, stepBlackHole, THRUST_RAMP } from '../../games/black-hole/rules';
+import {
+  MAX_LEAD_STEPS,
+  MAX_TAIL_STEPS,
+  pressStartStep,
+  pressSteps,
+  releaseStep,
+  TAP_BLEND_STEPS,
+  TAP_STEPS,
+} from '../../games/black-hole/press-timing';
+import {
+  type Arrow,
+  createBlackHoleGame,
+  heldThrust,
+  rampThrust,
+  setThrust,
+  stepBlackHole,
+  THRUST_RAMP,
+} from '../../games/black-hole/rules';
 
 const dt = 1 / 60;
 /** Steps the pacer has run at wall time t ms, frames every f ms. */
@@ -108,5 +124,84 @@ describe('black hole press timing', () => {
     // From TAP_BLEND_STEPS on a press thrusts just its own length; below it the steps never fall.
     expect(pressSteps(TAP_BLEND_STEPS)).toBe(TAP_BLEND_STEPS);
     for (let h = 0; h < TAP_BLEND_STEPS; h += 0.25) expect(pressSteps(h + 0.25)).toBeGreaterThanOrEqual(pressSteps(h));
+  });
+
+  test('the same key timings fly the same path at 20, 30 and 60 frames a second (within one step)', () => {
+    // ↑ 0.25 s, → 0.25 s, ↑ 0.4 s (wall clock, ms), then the ship's place after 3 s (180 steps), through
+    // a model of the page (main.ts press / release / the step hook): frames every 1000 / fps ms at 4
+    // phases, each running the steps the wall clock asks; a key event between two frames is handled
+    // with the steps run so far. `start` is the step a press begins at.
+    const keys: [number, boolean, Arrow][] = [
+      [110, true, 'up'],
+      [360, false, 'up'],
+      [520, true, 'right'],
+      [770, false, 'right'],
+      [900, true, 'up'],
+      [1300, false, 'up'],
+    ];
+    const fly = (fps: number, phase: number, start: (steps: number, t: number, stepMs: number) => number): [number, number] => {
+      const g = createBlackHoleGame({ seed: 1, holes: 1 });
+      const f = 1000 / fps;
+      const held: Arrow[] = [];
+      const pressed = new Map<Arrow, { step: number; ms: number }>();
+      const starts = new Map<Arrow, number>();
+      const ends = new Map<Arrow, number>();
+      const n0 = (from: Map<Arrow, number>, steps: number, add: boolean): void => {
+        for (const [d, s] of from) {
+          if (steps < s) continue;
+          from.delete(d);
+          if (add) held.push(d);
+          else held.splice(held.indexOf(d), 1);
+        }
+      };
+      let steps = 0,
+        stepMs = 0,
+        k = 0;
+      for (let T = phase * f; steps < 180; T += f) {
+        for (; k < keys.length && keys[k]![0] < T; k++) {
+          const [t, down, d] = keys[k]!;
+          if (down) {
+            const s = start(steps, t, stepMs);
+            pressed.set(d, { step: s, ms: t });
+            if (s > steps) starts.set(d, s);
+            else held.push(d);
+          } else {
+            const at = pressed.get(d)!;
+            ends.set(d, releaseStep(at.step, t - at.ms, steps, dt));
+          }
+          setThrust(g, heldThrust(held));
+        }
+        for (let n = 0; n < 4 && steps < Math.min(180, Math.floor(T / (1000 * dt) + 1e-9)); n++) {
+          n0(starts, steps, true);
+          n0(ends, steps, false);
+          setThrust(g, heldThrust(held));
+          stepBlackHole(g);
+          steps++;
+          stepMs = T;
+        }
+      }
+      const P = g.world.components.Position;
+      return [P.x[slotOf(g.ship)]!, P.y[slotOf(g.ship)]!];
+    };
+    const spread = (start: (steps: number, t: number, stepMs: number) => number): number => {
+      const ends = [20, 30, 60].flatMap((fps) => [0.1, 0.35, 0.6, 0.85].map((p) => fly(fps, p, start)));
+      let most = 0;
+      for (const a of ends) for (const b of ends) most = Math.max(most, Math.hypot(a[0] - b[0], a[1] - b[1]));
+      return most;
+    };
+    // Computed, not timed (no randomness), so the bounds can be close. Begun at the steps run (the
+    // page before): the ends lie 0.060 m apart. Begun at the press's own step: 0.017 m, one step's
+    // difference (the model's frame time leaves out the pacer's part-step remainder, as the page's does).
+    expect(spread((steps) => steps)).toBeGreaterThan(0.045);
+    expect(spread((steps, t, stepMs) => pressStartStep(steps, t, stepMs, dt))).toBeLessThan(0.03);
+  });
+
+  test('a press starts at the step of its moment, at most MAX_LEAD_STEPS on; bad input throws', () => {
+    expect(pressStartStep(10, 1000, 1000, dt)).toBe(10);
+    expect(pressStartStep(10, 1040, 1000, dt)).toBe(12);
+    expect(pressStartStep(10, 990, 1000, dt)).toBe(10);
+    expect(pressStartStep(10, 5000, 1000, dt)).toBe(10 + MAX_LEAD_STEPS);
+    expect(() => pressStartStep(-1, 0, 0, dt)).toThrow(/pressStartStep/);
+    expect(() => pressStartStep(0, Number.NaN, 0, dt)).toThrow(/pressStartStep/);
   });
 });
