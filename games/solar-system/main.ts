@@ -504,6 +504,9 @@ function startMission(index: number): void {
   params.mission = String(missionIndex + 1);
   progress.last.write(missionIndex);
   phase = 'aim';
+  // A tapped Wait's run ends with the mission it ran in: left set, a restart (R) ran on from day 0.
+  runTo = Number.NaN;
+  runToWindow = false;
   trailCount = 0;
   launches = 0;
   failedTries = 0;
