@@ -11,15 +11,7 @@ import { checkInertia, setInertiaUnchecked } from './rigid.js';
 export { assertRoom, createSlot } from '../world/handles.js';
 export type { MaterialOptions } from './material.js';
 
-import {
-  assertFinite,
-  assertNonNegative,
-  assertOptionalBoolean,
-  assertOptions,
-  assertPositive,
-  assertVector,
-  describe,
-} from '../validation/validate.js';
+import * as check from '../validation/validate.js';
 
 /**
  * Adds an empty entity, counting it against the world's capacity. Use it (or `addBody`) instead of
@@ -119,29 +111,31 @@ export function addBody(world: PhysicsWorld, options: BodyOptions = {}): number 
  * @category Bodies
  */
 export function addBodyAs(world: PhysicsWorld, options: BodyOptions, where: string, known: readonly string[]): number {
-  assertOptions(where, options, known);
+  check.assertOptions(where, options, known);
   const d = world.dimensions;
-  assertOptionalBoolean(where, 'static', options.static);
-  assertOptionalBoolean(where, 'kinematic', options.kinematic);
-  assertOptionalBoolean(where, 'rotates', options.rotates);
-  if (options.position !== undefined) assertVector(where, 'position', options.position, d);
-  if (options.velocity !== undefined) assertVector(where, 'velocity', options.velocity, d);
-  if (options.radius !== undefined) assertPositive(where, 'radius', options.radius);
+  check.assertOptionalBoolean(where, 'static', options.static);
+  check.assertOptionalBoolean(where, 'kinematic', options.kinematic);
+  check.assertOptionalBoolean(where, 'rotates', options.rotates);
+  if (options.position !== undefined) check.assertVector(where, 'position', options.position, d);
+  if (options.velocity !== undefined) check.assertVector(where, 'velocity', options.velocity, d);
+  if (options.radius !== undefined) check.assertPositive(where, 'radius', options.radius);
   if (options.mass !== undefined && options.density !== undefined) {
-    throw new RangeError(`${where}: give mass or density, not both (mass ${describe(options.mass)}, density ${describe(options.density)})`);
+    throw new RangeError(
+      `${where}: give mass or density, not both (mass ${check.describe(options.mass)}, density ${check.describe(options.density)})`,
+    );
   }
-  if (options.mass !== undefined) assertPositive(where, 'mass', options.mass);
+  if (options.mass !== undefined) check.assertPositive(where, 'mass', options.mass);
   if (options.density !== undefined) {
-    assertPositive(where, 'density', options.density);
+    check.assertPositive(where, 'density', options.density);
     if (options.radius === undefined) throw new RangeError(`${where}: density needs a radius`);
   }
   assertMaterial(where, options);
-  if (options.linearDrag !== undefined) assertNonNegative(where, 'linearDrag', options.linearDrag);
-  if (options.quadraticDrag !== undefined) assertNonNegative(where, 'quadraticDrag', options.quadraticDrag);
-  if (options.angle !== undefined) assertFinite(where, 'angle', options.angle);
+  if (options.linearDrag !== undefined) check.assertNonNegative(where, 'linearDrag', options.linearDrag);
+  if (options.quadraticDrag !== undefined) check.assertNonNegative(where, 'quadraticDrag', options.quadraticDrag);
+  if (options.angle !== undefined) check.assertFinite(where, 'angle', options.angle);
   if (options.orientation !== undefined) {
     if (d !== 3) throw new TypeError(`${where}: orientation is for 3D worlds; use angle in 2D`);
-    assertVector(where, 'orientation', options.orientation, 4);
+    check.assertVector(where, 'orientation', options.orientation, 4);
     if (!(Math.hypot(options.orientation[0]!, options.orientation[1]!, options.orientation[2]!, options.orientation[3]!) > 0)) {
       throw new RangeError(`${where}: orientation must not be the zero quaternion`);
     }
@@ -151,8 +145,8 @@ export function addBodyAs(world: PhysicsWorld, options: BodyOptions, where: stri
   if (isStatic && isKinematic) throw new RangeError(`${where}: a body cannot be both static and kinematic`);
   const rotates = options.rotates ?? ((options.radius !== undefined || options.inertia !== undefined) && !isStatic && !isKinematic);
   if (options.angularVelocity !== undefined) {
-    if (d === 2) assertFinite(where, 'angularVelocity', options.angularVelocity);
-    else assertVector(where, 'angularVelocity', options.angularVelocity, 3);
+    if (d === 2) check.assertFinite(where, 'angularVelocity', options.angularVelocity);
+    else check.assertVector(where, 'angularVelocity', options.angularVelocity, 3);
     if (!rotates) throw new RangeError(`${where}: angularVelocity needs rotates: true`);
   }
   if (options.inertia !== undefined) {
@@ -258,10 +252,10 @@ export interface ParticleOptions {
  */
 export function addParticle(world: PhysicsWorld, options: ParticleOptions = {}): number {
   const where = 'addParticle';
-  assertOptions(where, options, ['position', 'velocity']);
+  check.assertOptions(where, options, ['position', 'velocity']);
   const d = world.dimensions;
-  if (options.position !== undefined) assertVector(where, 'position', options.position, d);
-  if (options.velocity !== undefined) assertVector(where, 'velocity', options.velocity, d);
+  if (options.position !== undefined) check.assertVector(where, 'position', options.position, d);
+  if (options.velocity !== undefined) check.assertVector(where, 'velocity', options.velocity, d);
   const eid = createSlot(world, where);
   const c = world.components;
   addComponent(world, eid, c.Position);
@@ -299,11 +293,11 @@ export interface SegmentOptions extends MaterialOptions {
  */
 export function addSegment(world: PhysicsWorld, options: SegmentOptions): number {
   const where = 'addSegment';
-  assertOptions(where, options, ['a', 'b', 'radius', 'restitution', 'friction', 'staticFriction']);
+  check.assertOptions(where, options, ['a', 'b', 'radius', 'restitution', 'friction', 'staticFriction']);
   const d = world.dimensions;
-  assertVector(where, 'a', options.a, d);
-  assertVector(where, 'b', options.b, d);
-  if (options.radius !== undefined) assertNonNegative(where, 'radius', options.radius);
+  check.assertVector(where, 'a', options.a, d);
+  check.assertVector(where, 'b', options.b, d);
+  if (options.radius !== undefined) check.assertNonNegative(where, 'radius', options.radius);
   assertMaterial(where, options);
   const eid = createSlot(world, where);
   const c = world.components;
@@ -343,13 +337,15 @@ export interface BoundaryOptions extends MaterialOptions {
  */
 export function setBoundary(world: PhysicsWorld, options: BoundaryOptions): void {
   const where = 'setBoundary';
-  assertOptions(where, options, ['min', 'max', 'restitution', 'friction', 'staticFriction']);
+  check.assertOptions(where, options, ['min', 'max', 'restitution', 'friction', 'staticFriction']);
   const d = world.dimensions;
-  assertVector(where, 'min', options.min, d);
-  assertVector(where, 'max', options.max, d);
+  check.assertVector(where, 'min', options.min, d);
+  check.assertVector(where, 'max', options.max, d);
   for (let i = 0; i < d; i++) {
     if (!(options.max[i]! > options.min[i]!)) {
-      throw new RangeError(`${where}: max[${i}] must be > min[${i}], got min ${describe(options.min)}, max ${describe(options.max)}`);
+      throw new RangeError(
+        `${where}: max[${i}] must be > min[${i}], got min ${check.describe(options.min)}, max ${check.describe(options.max)}`,
+      );
     }
   }
   assertMaterial(where, options);
@@ -402,7 +398,7 @@ function setMassUnchecked(world: PhysicsWorld, eid: number, mass: number): void 
  */
 export function setMass(world: PhysicsWorld, eid: number, mass: number): void {
   const slot = resolveKind(world, eid, 'body', 'setMass');
-  assertPositive('setMass', 'mass', mass);
+  check.assertPositive('setMass', 'mass', mass);
   const c = world.components;
   if (hasComponent(world, slot, c.Static) || hasComponent(world, slot, c.Kinematic)) {
     throw new RangeError(`setMass: entity ${eid} is static or kinematic and has infinite mass`);
@@ -438,7 +434,7 @@ export function setMass(world: PhysicsWorld, eid: number, mass: number): void {
 export function setMaterial(world: PhysicsWorld, eid: number, material: MaterialOptions): void {
   const where = 'setMaterial';
   const slot = resolveKind(world, eid, 'collider', where);
-  assertOptions(where, material, ['restitution', 'friction', 'staticFriction']);
+  check.assertOptions(where, material, ['restitution', 'friction', 'staticFriction']);
   assertMaterial(where, material);
   const c = world.components;
   if (!hasComponent(world, slot, c.Material)) addComponent(world, slot, c.Material);
@@ -455,11 +451,11 @@ export function setMaterial(world: PhysicsWorld, eid: number, material: Material
  */
 export function setRadius(world: PhysicsWorld, eid: number, radius: number): void {
   const slot = resolveKind(world, eid, 'body', 'setRadius');
-  assertPositive('setRadius', 'radius', radius);
+  check.assertPositive('setRadius', 'radius', radius);
   const shapes = shapes3DOf(world);
   if (shapes !== undefined && shapes.first[slot] !== 0) {
     throw new RangeError(
-      `setRadius: eid must be a body without 3D shapes (its shapes give its size and mass; add a 'sphere' shape instead), got body ${describe(eid)}`,
+      `setRadius: eid must be a body without 3D shapes (its shapes give its size and mass; add a 'sphere' shape instead), got body ${check.describe(eid)}`,
     );
   }
   const c = world.components;
@@ -487,7 +483,7 @@ export function setPosition(world: PhysicsWorld, eid: number, position: ArrayLik
   const slot = resolveEntity(world, eid, where);
   const c = world.components;
   if (!hasComponent(world, slot, c.Position)) resolveKind(world, eid, 'body', where);
-  assertVector(where, 'position', position, world.dimensions);
+  check.assertVector(where, 'position', position, world.dimensions);
   wakeIsland(world, slot);
   placeBody(world, slot, position);
 }
@@ -520,7 +516,7 @@ export function setVelocity(world: PhysicsWorld, eid: number, velocity: ArrayLik
   const c = world.components;
   const emitter = hasComponent(world, slot, c.Emitter) && hasComponent(world, slot, c.Position);
   if (!emitter) resolveKind(world, eid, 'body', where);
-  assertVector(where, 'velocity', velocity, world.dimensions);
+  check.assertVector(where, 'velocity', velocity, world.dimensions);
   if (emitter && !hasComponent(world, slot, c.Velocity)) {
     addComponent(world, slot, c.Velocity);
     addComponent(world, slot, c.Kinematic);
@@ -539,7 +535,7 @@ export function setVelocity(world: PhysicsWorld, eid: number, velocity: ArrayLik
  */
 export function applyImpulse(world: PhysicsWorld, eid: number, impulse: ArrayLike<number>): void {
   const slot = resolveKind(world, eid, 'body', 'applyImpulse');
-  assertVector('applyImpulse', 'impulse', impulse, world.dimensions);
+  check.assertVector('applyImpulse', 'impulse', impulse, world.dimensions);
   wakeIsland(world, slot);
   const c = world.components;
   const im = hasComponent(world, slot, c.Mass) ? c.Mass.inv[slot]! : 0;
@@ -554,7 +550,7 @@ export function applyImpulse(world: PhysicsWorld, eid: number, impulse: ArrayLik
  * @category Bodies
  */
 export function setGravity(world: PhysicsWorld, gravity: ArrayLike<number>): void {
-  assertVector('setGravity', 'gravity', gravity, world.dimensions);
+  check.assertVector('setGravity', 'gravity', gravity, world.dimensions);
   for (let i = 0; i < 3; i++) world.gravity[i] = i < world.dimensions ? gravity[i]! : 0;
 }
 
@@ -568,7 +564,7 @@ export function setTimeStep(world: PhysicsWorld, dt: number, substeps?: number):
   assertTimeStep('setTimeStep', dt);
   if (substeps !== undefined) {
     if (!Number.isInteger(substeps) || substeps < 1 || substeps > 64) {
-      throw new RangeError(`setTimeStep: substeps must be an integer in [1, 64], got ${describe(substeps)}`);
+      throw new RangeError(`setTimeStep: substeps must be an integer in [1, 64], got ${check.describe(substeps)}`);
     }
     world.substeps = substeps;
   }
@@ -585,8 +581,8 @@ export function setTimeStep(world: PhysicsWorld, dt: number, substeps?: number):
 export function setAngularVelocity(world: PhysicsWorld, eid: number, angularVelocity: number | ArrayLike<number>): void {
   const where = 'setAngularVelocity';
   const slot = resolveKind(world, eid, 'body', where);
-  if (world.dimensions === 2) assertFinite(where, 'angularVelocity', angularVelocity);
-  else assertVector(where, 'angularVelocity', angularVelocity, 3);
+  if (world.dimensions === 2) check.assertFinite(where, 'angularVelocity', angularVelocity);
+  else check.assertVector(where, 'angularVelocity', angularVelocity, 3);
   wakeIsland(world, slot);
   const c = world.components;
   if (!hasComponent(world, slot, c.AngularVelocity)) addComponent(world, slot, c.AngularVelocity);
@@ -611,13 +607,13 @@ export function setOrientation(world: PhysicsWorld, eid: number, orientation: nu
   const slot = resolveKind(world, eid, 'body', where);
   const c = world.components;
   if (world.dimensions === 2) {
-    assertFinite(where, 'orientation', orientation);
+    check.assertFinite(where, 'orientation', orientation);
     wakeIsland(world, slot);
     if (!hasComponent(world, slot, c.Angle)) addComponent(world, slot, c.Angle);
     c.Angle.value[slot] = orientation as number;
     return;
   }
-  assertVector(where, 'orientation', orientation, 4);
+  check.assertVector(where, 'orientation', orientation, 4);
   const q = orientation as ArrayLike<number>;
   const n = Math.hypot(q[0]!, q[1]!, q[2]!, q[3]!);
   if (!(n > 0)) throw new RangeError(`${where}: orientation must not be the zero quaternion`);

@@ -1,15 +1,7 @@
 import { addComponent, hasComponent } from 'bitecs';
 import { wakeIsland } from '../islands/sleep.js';
 import { rotateVector, rotateVectorInverse } from '../math/quaternion.js';
-import {
-  assertFinite,
-  assertNonNegative,
-  assertOptions,
-  assertPositive,
-  assertVector,
-  describe,
-  unitVector,
-} from '../validation/validate.js';
+import * as check from '../validation/validate.js';
 import { createSlot, currentHandle, resolveKind } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { addComponentIfMissing } from '../world/options.js';
@@ -27,8 +19,8 @@ import { assertMaterial, type MaterialOptions, writeMaterial } from './material.
  * @category Bodies
  */
 export function inertiaOfSolidSphere(mass: number, radius: number): number {
-  assertPositive('inertiaOfSolidSphere', 'mass', mass);
-  assertPositive('inertiaOfSolidSphere', 'radius', radius);
+  check.assertPositive('inertiaOfSolidSphere', 'mass', mass);
+  check.assertPositive('inertiaOfSolidSphere', 'radius', radius);
   return 0.4 * mass * radius * radius;
 }
 
@@ -37,8 +29,8 @@ export function inertiaOfSolidSphere(mass: number, radius: number): number {
  * @category Bodies
  */
 export function inertiaOfSphericalShell(mass: number, radius: number): number {
-  assertPositive('inertiaOfSphericalShell', 'mass', mass);
-  assertPositive('inertiaOfSphericalShell', 'radius', radius);
+  check.assertPositive('inertiaOfSphericalShell', 'mass', mass);
+  check.assertPositive('inertiaOfSphericalShell', 'radius', radius);
   return (2 / 3) * mass * radius * radius;
 }
 
@@ -48,9 +40,9 @@ export function inertiaOfSphericalShell(mass: number, radius: number): number {
  * @category Bodies
  */
 export function inertiaOfSolidBox(mass: number, size: ArrayLike<number>): [number, number, number] {
-  assertPositive('inertiaOfSolidBox', 'mass', mass);
-  assertVector('inertiaOfSolidBox', 'size', size, 3);
-  for (let i = 0; i < 3; i++) assertPositive('inertiaOfSolidBox', `size[${i}]`, size[i]);
+  check.assertPositive('inertiaOfSolidBox', 'mass', mass);
+  check.assertVector('inertiaOfSolidBox', 'size', size, 3);
+  for (let i = 0; i < 3; i++) check.assertPositive('inertiaOfSolidBox', `size[${i}]`, size[i]);
   const a = size[0]!,
     b = size[1]!,
     c = size[2]!;
@@ -63,9 +55,9 @@ export function inertiaOfSolidBox(mass: number, size: ArrayLike<number>): [numbe
  * @category Bodies
  */
 export function inertiaOfSolidCylinder(mass: number, radius: number, height: number): [number, number, number] {
-  assertPositive('inertiaOfSolidCylinder', 'mass', mass);
-  assertPositive('inertiaOfSolidCylinder', 'radius', radius);
-  assertPositive('inertiaOfSolidCylinder', 'height', height);
+  check.assertPositive('inertiaOfSolidCylinder', 'mass', mass);
+  check.assertPositive('inertiaOfSolidCylinder', 'radius', radius);
+  check.assertPositive('inertiaOfSolidCylinder', 'height', height);
   const side = (mass * (3 * radius * radius + height * height)) / 12;
   return [side, 0.5 * mass * radius * radius, side];
 }
@@ -75,8 +67,8 @@ export function inertiaOfSolidCylinder(mass: number, radius: number, height: num
  * @category Bodies
  */
 export function inertiaOfDisc(mass: number, radius: number): number {
-  assertPositive('inertiaOfDisc', 'mass', mass);
-  assertPositive('inertiaOfDisc', 'radius', radius);
+  check.assertPositive('inertiaOfDisc', 'mass', mass);
+  check.assertPositive('inertiaOfDisc', 'radius', radius);
   return 0.5 * mass * radius * radius;
 }
 
@@ -85,9 +77,9 @@ export function inertiaOfDisc(mass: number, radius: number): number {
  * @category Bodies
  */
 export function inertiaOfRectangle(mass: number, width: number, height: number): number {
-  assertPositive('inertiaOfRectangle', 'mass', mass);
-  assertPositive('inertiaOfRectangle', 'width', width);
-  assertPositive('inertiaOfRectangle', 'height', height);
+  check.assertPositive('inertiaOfRectangle', 'mass', mass);
+  check.assertPositive('inertiaOfRectangle', 'width', width);
+  check.assertPositive('inertiaOfRectangle', 'height', height);
   return (mass * (width * width + height * height)) / 12;
 }
 
@@ -100,15 +92,15 @@ export function inertiaOfRectangle(mass: number, width: number, height: number):
  */
 export function checkInertia(where: string, dimensions: 2 | 3, inertia: unknown): void {
   if (typeof inertia === 'number') {
-    assertPositive(where, 'inertia', inertia);
+    check.assertPositive(where, 'inertia', inertia);
     return;
   }
   if (dimensions === 2)
-    throw new TypeError(`${where}: inertia must be a number in 2D (one moment about z, kg m^2), got ${describe(inertia)}`);
-  assertVector(where, 'inertia', inertia, 3);
-  for (let i = 0; i < 3; i++) assertNonNegative(where, `inertia[${i}]`, inertia[i]);
+    throw new TypeError(`${where}: inertia must be a number in 2D (one moment about z, kg m^2), got ${check.describe(inertia)}`);
+  check.assertVector(where, 'inertia', inertia, 3);
+  for (let i = 0; i < 3; i++) check.assertNonNegative(where, `inertia[${i}]`, inertia[i]);
   if (!(inertia[0]! > 0 || inertia[1]! > 0 || inertia[2]! > 0))
-    throw new RangeError(`${where}: inertia must have at least one principal moment > 0, got ${describe(inertia)}`);
+    throw new RangeError(`${where}: inertia must have at least one principal moment > 0, got ${check.describe(inertia)}`);
 }
 
 /**
@@ -194,8 +186,8 @@ function pointLoadBody(
 ): number {
   const slot = resolveKind(world, eid, 'body', where);
   const d = world.dimensions;
-  assertVector(where, name, load, d);
-  assertVector(where, 'point', point, d);
+  check.assertVector(where, name, load, d);
+  check.assertVector(where, 'point', point, d);
   wakeIsland(world, slot);
   return slot;
 }
@@ -316,7 +308,7 @@ export function spinKineticEnergy(world: PhysicsWorld, eid: number): number {
  */
 export function setAngularDamping(world: PhysicsWorld, eid: number, k: number): void {
   const slot = resolveKind(world, eid, 'body', 'setAngularDamping');
-  assertNonNegative('setAngularDamping', 'k', k);
+  check.assertNonNegative('setAngularDamping', 'k', k);
   const c = world.components;
   addComponentIfMissing(world, slot, c.AngularDamping);
   c.AngularDamping.k[slot] = k;
@@ -342,14 +334,14 @@ export interface PlaneOptions extends MaterialOptions {
  */
 export function addPlane(world: PhysicsWorld, options: PlaneOptions): number {
   const where = 'addPlane';
-  assertOptions(where, options, ['normal', 'point', 'restitution', 'friction', 'staticFriction']);
+  check.assertOptions(where, options, ['normal', 'point', 'restitution', 'friction', 'staticFriction']);
   const d = world.dimensions;
-  const [nx, ny, nz] = unitVector(where, 'normal', options.normal, d);
-  if (options.point !== undefined) assertVector(where, 'point', options.point, d);
+  const [nx, ny, nz] = check.unitVector(where, 'normal', options.normal, d);
+  if (options.point !== undefined) check.assertVector(where, 'point', options.point, d);
   assertMaterial(where, options);
   const p = options.point;
   const dist = p ? nx * p[0]! + ny * p[1]! + (d === 3 ? nz * p[2]! : 0) : 0;
-  assertFinite(where, 'offset', dist);
+  check.assertFinite(where, 'offset', dist);
   const eid = createSlot(world, where);
   const c = world.components;
   addComponent(world, eid, c.Plane);

@@ -2,15 +2,7 @@ import { addComponent, entityExists, hasComponent, removeEntity } from 'bitecs';
 import { ensureShapeState } from '../collision/manifolds-2d.js';
 import { type ConvexGeometry, makeBox, makeCapsule, makeCircle, makePolygon, transformGeometry } from '../shapes/geometry-2d.js';
 import { shapeMassProperties } from '../shapes/mass-2d.js';
-import {
-  assertFinite,
-  assertNonNegative,
-  assertOptionalBoolean,
-  assertOptions,
-  assertPositive,
-  assertVector,
-  describe,
-} from '../validation/validate.js';
+import * as check from '../validation/validate.js';
 import { currentHandle, resolveEntity, resolveKind, slotOf } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { addComponentIfMissing } from '../world/options.js';
@@ -90,27 +82,27 @@ function geometryOf(where: string, o: ShapeOptions): ConvexGeometry {
   switch (o.type) {
     case 'circle':
       forbid(['halfExtents', 'vertices', 'center1', 'center2']);
-      assertPositive(where, 'radius', o.radius);
+      check.assertPositive(where, 'radius', o.radius);
       return makeCircle(where, o.radius);
     case 'box': {
       forbid(['vertices', 'center1', 'center2']);
-      assertVector(where, 'halfExtents', o.halfExtents, 2);
+      check.assertVector(where, 'halfExtents', o.halfExtents, 2);
       return makeBox(where, o.halfExtents[0]!, o.halfExtents[1]!, 0, 0, 0, o.radius ?? 0);
     }
     case 'polygon':
       forbid(['halfExtents', 'center1', 'center2']);
       if (!Array.isArray(o.vertices))
-        throw new TypeError(`${where}: vertices must be an array of 3 to 8 points [x, y], got ${describe(o.vertices)}`);
+        throw new TypeError(`${where}: vertices must be an array of 3 to 8 points [x, y], got ${check.describe(o.vertices)}`);
       return makePolygon(where, o.vertices, o.radius ?? 0);
     case 'capsule':
       forbid(['halfExtents', 'vertices']);
-      assertVector(where, 'center1', o.center1, 2);
-      assertVector(where, 'center2', o.center2, 2);
-      assertPositive(where, 'radius', o.radius);
+      check.assertVector(where, 'center1', o.center1, 2);
+      check.assertVector(where, 'center2', o.center2, 2);
+      check.assertPositive(where, 'radius', o.radius);
       return makeCapsule(where, o.center1[0]!, o.center1[1]!, o.center2[0]!, o.center2[1]!, o.radius);
     default:
       throw new RangeError(
-        `${where}: type must be one of 'circle', 'box', 'polygon', 'capsule', got ${describe((o as { type: unknown }).type)}`,
+        `${where}: type must be one of 'circle', 'box', 'polygon', 'capsule', got ${check.describe((o as { type: unknown }).type)}`,
       );
   }
 }
@@ -143,14 +135,14 @@ export function addShape(world: PhysicsWorld, body: number, options: ShapeOption
 
 /** Checks `addShape`'s options (everything but the body and the world's room). @throws as addShape. */
 function checkShapeOptions(where: string, options: ShapeOptions): void {
-  assertOptions(where, options, SHAPE_OPTIONS);
-  assertOptionalBoolean(where, 'sensor', options.sensor);
+  check.assertOptions(where, options, SHAPE_OPTIONS);
+  check.assertOptionalBoolean(where, 'sensor', options.sensor);
   geometryOf(where, options);
-  if (options.offset !== undefined) assertVector(where, 'offset', options.offset, 2);
-  if (options.angle !== undefined) assertFinite(where, 'angle', options.angle);
-  if (options.density !== undefined) assertNonNegative(where, 'density', options.density);
+  if (options.offset !== undefined) check.assertVector(where, 'offset', options.offset, 2);
+  if (options.angle !== undefined) check.assertFinite(where, 'angle', options.angle);
+  if (options.density !== undefined) check.assertNonNegative(where, 'density', options.density);
   assertMaterial(where, options);
-  if (options.rollingResistance !== undefined) assertNonNegative(where, 'rollingResistance', options.rollingResistance);
+  if (options.rollingResistance !== undefined) check.assertNonNegative(where, 'rollingResistance', options.rollingResistance);
   assertFilter(where, options);
 }
 
@@ -402,10 +394,10 @@ export function setShapeFilter(world: PhysicsWorld, shape: number, filter: Filte
   const e = resolveEntity(world, shape, where, 'shape');
   if (world.dimensions !== 2 || !hasComponent(world, e, world.components.Shape)) {
     throw new RangeError(
-      `${where}: shape must be a shape of a 2D body (a handle from addShape, addBox or shapesOf), got ${describe(shape)}`,
+      `${where}: shape must be a shape of a 2D body (a handle from addShape, addBox or shapesOf), got ${check.describe(shape)}`,
     );
   }
-  assertOptions(where, filter, ['category', 'mask', 'group'], 'filter');
+  check.assertOptions(where, filter, ['category', 'mask', 'group'], 'filter');
   assertFilter(where, filter);
   const S = world.components.Shape;
   if (filter.category !== undefined) S.category[e] = filter.category;
@@ -469,7 +461,7 @@ const BOX_OPTIONS = [
 export function addBox(world: PhysicsWorld, options: BoxOptions): number {
   const where = 'addBox';
   if (world.dimensions !== 2) throw new TypeError(`${where}: shapes are 2D; this world has 3 dimensions`);
-  assertOptions(where, options, BOX_OPTIONS);
+  check.assertOptions(where, options, BOX_OPTIONS);
   const { halfExtents, radius, density, friction, staticFriction, restitution, category, mask, group, sensor, ...bodyOptions } = options;
   if (halfExtents === undefined) throw new TypeError(`${where}: halfExtents must be an array of 2 numbers, got undefined`);
   const shape: ShapeOptions = { type: 'box', halfExtents };
@@ -485,8 +477,8 @@ export function addBox(world: PhysicsWorld, options: BoxOptions): number {
   // Check the box first and the body next (addBodyAs checks everything before it creates), so a bad
   // box adds nothing; the shape then goes on the body's own entity, which cannot fail.
   checkShapeOptions(where, shape);
-  assertOptionalBoolean(where, 'static', bodyOptions.static);
-  assertOptionalBoolean(where, 'kinematic', bodyOptions.kinematic);
+  check.assertOptionalBoolean(where, 'static', bodyOptions.static);
+  check.assertOptionalBoolean(where, 'kinematic', bodyOptions.kinematic);
   const dynamic = bodyOptions.static !== true && bodyOptions.kinematic !== true;
   const body = addBodyAs(world, { ...bodyOptions, rotates: bodyOptions.rotates ?? dynamic }, where, BOX_BODY_OPTIONS);
   addShapeToSlot(world, slotOf(body), shape, where);

@@ -14,15 +14,7 @@ import {
   sphereMass,
 } from '../shapes/mass-3d.js';
 import { Shape3DKind, type Shape3DStore, shapes3DOf } from '../shapes/store-3d.js';
-import {
-  assertFinite,
-  assertNonNegative,
-  assertOptionalBoolean,
-  assertOptions,
-  assertPositive,
-  assertVector,
-  describe,
-} from '../validation/validate.js';
+import * as check from '../validation/validate.js';
 import { createSlot, currentHandle, resolveEntity, resolveKind } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { assertFilter, assertMaterial, type FilterOptions } from './material.js';
@@ -124,17 +116,17 @@ function storeHull(s: Shape3DStore, g: Geometry): number {
 function geometryOf(where: string, o: Shape3DOptions, s: Shape3DStore | undefined): Geometry {
   const t = o.type;
   if (!(typeof t === 'string' && Object.hasOwn(APPLIES, t)))
-    throw new TypeError(`${where}: type must be one of 'sphere', 'box', 'capsule', 'cylinder', 'hull', got ${describe(t)}`);
+    throw new TypeError(`${where}: type must be one of 'sphere', 'box', 'capsule', 'cylinder', 'hull', got ${check.describe(t)}`);
   for (const k of GEOMETRY)
     if (o[k] !== undefined && !APPLIES[t].includes(k)) throw new TypeError(`${where}: ${k} does not apply to a ${t}`);
   switch (t) {
     case 'sphere':
-      assertPositive(where, 'radius', o.radius);
+      check.assertPositive(where, 'radius', o.radius);
       return { kind: Shape3DKind.Sphere, r: o.radius, hx: 0, hy: 0, hz: 0, hull: null, key: '' };
     case 'box': {
-      assertVector(where, 'halfExtents', o.halfExtents, 3);
+      check.assertVector(where, 'halfExtents', o.halfExtents, 3);
       const h = o.halfExtents!;
-      for (let i = 0; i < 3; i++) assertPositive(where, `halfExtents[${i}]`, h[i]);
+      for (let i = 0; i < 3; i++) check.assertPositive(where, `halfExtents[${i}]`, h[i]);
       const key = `box ${h[0]} ${h[1]} ${h[2]}`;
       const hull = sharedHull(s, key, () => {
         const corners: number[][] = [];
@@ -145,8 +137,8 @@ function geometryOf(where: string, o: Shape3DOptions, s: Shape3DStore | undefine
     }
     case 'capsule':
     case 'cylinder': {
-      assertPositive(where, 'radius', o.radius);
-      assertPositive(where, 'halfHeight', o.halfHeight);
+      check.assertPositive(where, 'radius', o.radius);
+      check.assertPositive(where, 'halfHeight', o.halfHeight);
       const key = `cylinder ${o.radius} ${o.halfHeight}`;
       return {
         kind: t === 'capsule' ? Shape3DKind.Capsule : Shape3DKind.Cylinder,
@@ -233,11 +225,11 @@ export function addShape3D(world: PhysicsWorld, body: number, options: Shape3DOp
     // A ball body is a sphere collider of the ball narrowphase with the mass addBody gave it; shapes would
     // replace that mass with theirs while the ball kept colliding. One body, one kind of collider.
     throw new RangeError(
-      `${where}: body must be a body without a ball radius (addBody's radius makes it a ball; give the sphere as a shape instead: { type: 'sphere', radius }), got body ${describe(body)} with radius ${balls.radius[b]}`,
+      `${where}: body must be a body without a ball radius (addBody's radius makes it a ball; give the sphere as a shape instead: { type: 'sphere', radius }), got body ${check.describe(body)} with radius ${balls.radius[b]}`,
     );
   }
-  assertOptions(where, options, OPTIONS);
-  assertOptionalBoolean(where, 'sensor', options.sensor);
+  check.assertOptions(where, options, OPTIONS);
+  check.assertOptionalBoolean(where, 'sensor', options.sensor);
   const g = geometryOf(where, options, shapes3DOf(world));
   let ox = 0,
     oy = 0,
@@ -247,23 +239,23 @@ export function addShape3D(world: PhysicsWorld, body: number, options: Shape3DOp
     rz = 0,
     rw = 1;
   if (options.offset !== undefined) {
-    assertVector(where, 'offset', options.offset, 3);
+    check.assertVector(where, 'offset', options.offset, 3);
     ox = options.offset[0]!;
     oy = options.offset[1]!;
     oz = options.offset[2]!;
   }
   if (options.rotation !== undefined) {
-    assertVector(where, 'rotation', options.rotation, 4);
+    check.assertVector(where, 'rotation', options.rotation, 4);
     const q = options.rotation;
     const l = Math.hypot(q[0]!, q[1]!, q[2]!, q[3]!);
-    if (!(l > 0)) throw new RangeError(`${where}: rotation must be a non-zero quaternion (x, y, z, w), got ${describe(q)}`);
+    if (!(l > 0)) throw new RangeError(`${where}: rotation must be a non-zero quaternion (x, y, z, w), got ${check.describe(q)}`);
     rx = q[0]! / l;
     ry = q[1]! / l;
     rz = q[2]! / l;
     rw = q[3]! / l;
   }
   const density = options.density ?? 1000;
-  assertNonNegative(where, 'density', density);
+  check.assertNonNegative(where, 'density', density);
   assertMaterial(where, options);
   assertFilter(where, options);
   const friction = options.friction ?? 0.6,
@@ -271,7 +263,7 @@ export function addShape3D(world: PhysicsWorld, body: number, options: Shape3DOp
   const category = options.category ?? 1,
     mask = options.mask ?? 0xffffffff,
     group = options.group ?? 0;
-  for (const v of [ox, oy, oz]) assertFinite(where, 'offset', v);
+  for (const v of [ox, oy, oz]) check.assertFinite(where, 'offset', v);
 
   const e = createSlot(world, where); // throws on a full world before anything changed
   const s = shapes3DOf(world, true);
@@ -465,7 +457,7 @@ export function hullOfShape3D(world: PhysicsWorld, shape: number): Hull {
   const e = resolveEntity(world, shape, 'hullOfShape3D', 'shape');
   const s = shapes3DOf(world);
   if (s === undefined || s.body[e] === 0 || s.hull[e]! < 0)
-    throw new RangeError(`hullOfShape3D: shape must be a hull shape, got id ${describe(shape)}`);
+    throw new RangeError(`hullOfShape3D: shape must be a hull shape, got id ${check.describe(shape)}`);
   return s.hulls[s.hull[e]!]!;
 }
 

@@ -1,14 +1,6 @@
 import { addComponent } from 'bitecs';
 import { addBodyAs, createSlot, removeBody } from '../bodies/api.js';
-import {
-  assertFinite,
-  assertInteger,
-  assertNonNegative,
-  assertOptions,
-  assertPositive,
-  assertVector,
-  describe,
-} from '../validation/validate.js';
+import * as check from '../validation/validate.js';
 import { ClothLinkKind } from '../world/cloth-store.js';
 import { currentHandle, isAlive, slotOf } from '../world/handles.js';
 import { installSystem } from '../world/install.js';
@@ -107,29 +99,29 @@ export function installCloth(world: PhysicsWorld): void {
 export function createCloth(world: PhysicsWorld, options: ClothOptions = {}): Cloth {
   const where = 'createCloth';
   if (world.dimensions !== 2) throw new RangeError(`${where}: cloth needs a 2D world, this world has ${world.dimensions} dimensions`);
-  assertOptions(where, options, KEYS, 'options', ['shearCompliance', 'bendCompliance']);
+  check.assertOptions(where, options, KEYS, 'options', ['shearCompliance', 'bendCompliance']);
   const origin = options.origin ?? [0, 0];
-  assertVector(where, 'origin', origin, 2);
+  check.assertVector(where, 'origin', origin, 2);
   const width = options.width ?? 1,
     height = options.height ?? 1;
-  assertPositive(where, 'width', width);
-  assertPositive(where, 'height', height);
+  check.assertPositive(where, 'width', width);
+  check.assertPositive(where, 'height', height);
   const cols = options.columns ?? 32,
     rows = options.rows ?? 32;
-  assertInteger(where, 'columns', cols, 2, 512);
-  assertInteger(where, 'rows', rows, 2, 512);
+  check.assertInteger(where, 'columns', cols, 2, 512);
+  check.assertInteger(where, 'rows', rows, 2, 512);
   const mass = options.mass ?? 0.5;
-  assertPositive(where, 'mass', mass);
+  check.assertPositive(where, 'mass', mass);
   const compliance = options.compliance ?? 0;
-  assertNonNegative(where, 'compliance', compliance);
+  check.assertNonNegative(where, 'compliance', compliance);
   const shear = options.shearCompliance === undefined ? 0.001 : options.shearCompliance;
-  if (shear !== null) assertNonNegative(where, 'shearCompliance', shear);
+  if (shear !== null) check.assertNonNegative(where, 'shearCompliance', shear);
   const bend = options.bendCompliance === undefined ? 0.01 : options.bendCompliance;
-  if (bend !== null) assertNonNegative(where, 'bendCompliance', bend);
+  if (bend !== null) check.assertNonNegative(where, 'bendCompliance', bend);
   const tear = options.tearStretch ?? Infinity;
-  if (tear !== Infinity) assertPositive(where, 'tearStretch', tear);
+  if (tear !== Infinity) check.assertPositive(where, 'tearStretch', tear);
   const drag = options.drag ?? 0.002;
-  assertNonNegative(where, 'drag', drag);
+  check.assertNonNegative(where, 'drag', drag);
   const n = cols * rows;
   const pinned = new Uint8Array(n);
   const pin = options.pinned ?? 'top';
@@ -139,9 +131,9 @@ export function createCloth(world: PhysicsWorld, options: ClothOptions = {}): Cl
     pinned[cols - 1] = 1;
   } else if (pin !== 'none') {
     if (!Array.isArray(pin))
-      throw new TypeError(`${where}: pinned must be 'top', 'corners', 'none' or an array of point indices, got ${describe(pin)}`);
+      throw new TypeError(`${where}: pinned must be 'top', 'corners', 'none' or an array of point indices, got ${check.describe(pin)}`);
     for (const i of pin) {
-      assertInteger(where, 'pinned[i]', i, 0, n - 1);
+      check.assertInteger(where, 'pinned[i]', i, 0, n - 1);
       pinned[i] = 1;
     }
   }
@@ -162,7 +154,9 @@ export function createCloth(world: PhysicsWorld, options: ClothOptions = {}): Cl
   const m = mass / n;
   const far = Math.max(Math.abs(origin[0]!) + width, Math.abs(origin[1]!) + height);
   if (!Number.isFinite(far))
-    throw new RangeError(`${where}: origin, width and height must keep the cloth finite, got ${describe(origin)}, ${width} x ${height}`);
+    throw new RangeError(
+      `${where}: origin, width and height must keep the cloth finite, got ${check.describe(origin)}, ${width} x ${height}`,
+    );
   const points = new Float64Array(n);
   let made = 0;
   try {
@@ -239,8 +233,8 @@ const POINT_OPTIONS = ['position', 'static', 'mass', 'linearDrag'] as const;
  * @category Cloth
  */
 export function clothPointIndex(cloth: Cloth, row: number, column: number): number {
-  assertInteger('clothPointIndex', 'row', row, 0, cloth.rows - 1);
-  assertInteger('clothPointIndex', 'column', column, 0, cloth.columns - 1);
-  assertFinite('clothPointIndex', 'row', row);
+  check.assertInteger('clothPointIndex', 'row', row, 0, cloth.rows - 1);
+  check.assertInteger('clothPointIndex', 'column', column, 0, cloth.columns - 1);
+  check.assertFinite('clothPointIndex', 'row', row);
   return row * cloth.columns + column;
 }

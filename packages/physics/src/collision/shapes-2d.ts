@@ -450,8 +450,7 @@ function collideStatic(world: PhysicsWorld, st: ShapeCollisionState): void {
     S = c.Shape;
   const type = cs.bodyType,
     h = world.h;
-  const vx = c.Velocity.x,
-    vy = c.Velocity.y;
+  const { x: vx, y: vy } = c.Velocity;
   const planes = query(world, [c.Plane]);
   const segs = query(world, [c.Segment]);
   const box = cs.boundary;

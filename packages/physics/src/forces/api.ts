@@ -1,16 +1,5 @@
 import { addComponent, hasComponent } from 'bitecs';
-import {
-  assertFinite,
-  assertInteger,
-  assertNonNegative,
-  assertOneOf,
-  assertOptionalBoolean,
-  assertOptions,
-  assertPositive,
-  assertVector,
-  describe,
-  unitVector,
-} from '../validation/validate.js';
+import * as check from '../validation/validate.js';
 import { createSlot, currentHandle, resolveKind } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { addComponentIfMissing } from '../world/options.js';
@@ -42,7 +31,7 @@ function writeVec3(world: PhysicsWorld, v: ArrayLike<number>, x: Float64Array, y
  */
 function optionsBody(world: PhysicsWorld, body: number, where: string, options: object, keys: readonly string[]): number {
   const eid = resolveKind(world, body, 'body', where);
-  assertOptions(where, options, keys);
+  check.assertOptions(where, options, keys);
   return eid;
 }
 
@@ -53,7 +42,7 @@ function optionsBody(world: PhysicsWorld, body: number, where: string, options: 
  */
 export function setGravityScale(world: PhysicsWorld, body: number, scale: number): void {
   const eid = resolveKind(world, body, 'body', 'setGravityScale');
-  assertFinite('setGravityScale', 'scale', scale);
+  check.assertFinite('setGravityScale', 'scale', scale);
   addComponentIfMissing(world, eid, world.components.GravityScale);
   world.components.GravityScale.value[eid] = scale;
 }
@@ -76,8 +65,8 @@ export function enableMutualGravity(world: PhysicsWorld, body: number): void {
 export function setAttractor(world: PhysicsWorld, body: number, options: { mass: number; softening?: number }): void {
   const where = 'setAttractor';
   const eid = optionsBody(world, body, where, options, ['mass', 'softening']);
-  assertPositive(where, 'mass', options.mass);
-  if (options.softening !== undefined) assertNonNegative(where, 'softening', options.softening);
+  check.assertPositive(where, 'mass', options.mass);
+  if (options.softening !== undefined) check.assertNonNegative(where, 'softening', options.softening);
   const c = world.components;
   addComponentIfMissing(world, eid, c.Attractor);
   c.Attractor.mass[eid] = options.mass;
@@ -90,7 +79,7 @@ export function setAttractor(world: PhysicsWorld, body: number, options: { mass:
  */
 export function setCharge(world: PhysicsWorld, body: number, charge: number): void {
   const eid = resolveKind(world, body, 'body', 'setCharge');
-  assertFinite('setCharge', 'charge', charge);
+  check.assertFinite('setCharge', 'charge', charge);
   addComponentIfMissing(world, eid, world.components.Charge);
   world.components.Charge.value[eid] = charge;
 }
@@ -121,23 +110,23 @@ function checkField(
   options: FieldOptions,
   magnetic: boolean,
 ): { f: number[] | null; a: number[] | null } {
-  assertOptions(where, options, FIELD_OPTIONS);
+  check.assertOptions(where, options, FIELD_OPTIONS);
   const read = (name: string, v: ArrayLike<number> | number | undefined): number[] | null => {
     if (v === undefined) return null;
     if (typeof v === 'number') {
       if (!(magnetic && world.dimensions === 2))
-        throw new TypeError(`${where}: ${name} must be an array of ${world.dimensions} numbers, got ${describe(v)}`);
-      assertFinite(where, name, v);
+        throw new TypeError(`${where}: ${name} must be an array of ${world.dimensions} numbers, got ${check.describe(v)}`);
+      check.assertFinite(where, name, v);
       return [0, 0, v];
     }
     const n = magnetic && world.dimensions === 2 && (v as ArrayLike<number>).length === 3 ? 3 : world.dimensions;
-    assertVector(where, name, v, n);
+    check.assertVector(where, name, v, n);
     return [v[0]!, v[1]!, n === 3 ? v[2]! : 0];
   };
   const f = read('field', options.field),
     a = read('amplitude', options.amplitude);
-  if (options.omega !== undefined) assertNonNegative(where, 'omega', options.omega);
-  if (options.phase !== undefined) assertFinite(where, 'phase', options.phase);
+  if (options.omega !== undefined) check.assertNonNegative(where, 'omega', options.omega);
+  if (options.phase !== undefined) check.assertFinite(where, 'phase', options.phase);
   return { f, a };
 }
 
@@ -236,9 +225,9 @@ export function setMagneticField(world: PhysicsWorld, field: number, options: Fi
 export function setCentralForce(world: PhysicsWorld, body: number, options: { centre: ArrayLike<number>; k: number; n: number }): void {
   const where = 'setCentralForce';
   const eid = optionsBody(world, body, where, options, ['centre', 'k', 'n']);
-  assertVector(where, 'centre', options.centre, world.dimensions);
-  assertFinite(where, 'k', options.k);
-  assertFinite(where, 'n', options.n);
+  check.assertVector(where, 'centre', options.centre, world.dimensions);
+  check.assertFinite(where, 'k', options.k);
+  check.assertFinite(where, 'n', options.n);
   const c = world.components;
   addComponentIfMissing(world, eid, c.CentralForce);
   writeVec3(world, options.centre, c.CentralForce.cx, c.CentralForce.cy, c.CentralForce.cz, eid);
@@ -254,8 +243,8 @@ export function setCentralForce(world: PhysicsWorld, body: number, options: { ce
 export function setDrag(world: PhysicsWorld, body: number, options: { linear?: number; quadratic?: number }): void {
   const where = 'setDrag';
   const eid = optionsBody(world, body, where, options, ['linear', 'quadratic']);
-  if (options.linear !== undefined) assertNonNegative(where, 'linear', options.linear);
-  if (options.quadratic !== undefined) assertNonNegative(where, 'quadratic', options.quadratic);
+  if (options.linear !== undefined) check.assertNonNegative(where, 'linear', options.linear);
+  if (options.quadratic !== undefined) check.assertNonNegative(where, 'quadratic', options.quadratic);
   writeDrag(world, eid, options.linear, options.quadratic);
 }
 
@@ -284,8 +273,8 @@ export function writeDrag(world: PhysicsWorld, eid: number, linear: number | und
 export function setLift(world: PhysicsWorld, body: number, options: { k: number; axis?: ArrayLike<number> }): void {
   const where = 'setLift';
   const eid = optionsBody(world, body, where, options, ['k', 'axis']);
-  assertNonNegative(where, 'k', options.k);
-  const [ax, ay, az] = options.axis === undefined ? [0, 0, 1] : unitVector(where, 'axis', options.axis, 3);
+  check.assertNonNegative(where, 'k', options.k);
+  const [ax, ay, az] = options.axis === undefined ? [0, 0, 1] : check.unitVector(where, 'axis', options.axis, 3);
   const c = world.components;
   addComponentIfMissing(world, eid, c.Lift);
   c.Lift.k[eid] = options.k;
@@ -318,14 +307,14 @@ export function setBuoyancy(world: PhysicsWorld, body: number, options: Buoyancy
   const eid = optionsBody(world, body, where, options, ['shape', 'radius', 'halfExtents', 'dragCoefficient']);
   const c = world.components;
   const B = c.Buoyancy;
-  assertOneOf(where, 'shape', options.shape, ['ball', 'box']);
+  check.assertOneOf(where, 'shape', options.shape, ['ball', 'box']);
   if (options.shape === 'ball') {
-    assertPositive(where, 'radius', options.radius);
+    check.assertPositive(where, 'radius', options.radius);
   } else {
-    assertVector(where, 'halfExtents', options.halfExtents, world.dimensions);
-    for (let i = 0; i < world.dimensions; i++) assertPositive(where, `halfExtents[${i}]`, options.halfExtents![i]);
+    check.assertVector(where, 'halfExtents', options.halfExtents, world.dimensions);
+    for (let i = 0; i < world.dimensions; i++) check.assertPositive(where, `halfExtents[${i}]`, options.halfExtents![i]);
   }
-  if (options.dragCoefficient !== undefined) assertNonNegative(where, 'dragCoefficient', options.dragCoefficient);
+  if (options.dragCoefficient !== undefined) check.assertNonNegative(where, 'dragCoefficient', options.dragCoefficient);
   addComponentIfMissing(world, eid, B);
   if (options.shape === 'ball') {
     B.shape[eid] = BuoyancyShape.Ball;
@@ -359,14 +348,14 @@ export interface FluidRegionOptions {
 const FLUID_OPTIONS = ['surface', 'density', 'xRange', 'zRange'] as const;
 
 function checkFluid(where: string, options: FluidRegionOptions): void {
-  assertOptions(where, options, FLUID_OPTIONS);
-  if (options.surface !== undefined) assertFinite(where, 'surface', options.surface);
-  if (options.density !== undefined) assertPositive(where, 'density', options.density);
+  check.assertOptions(where, options, FLUID_OPTIONS);
+  if (options.surface !== undefined) check.assertFinite(where, 'surface', options.surface);
+  if (options.density !== undefined) check.assertPositive(where, 'density', options.density);
   for (const key of ['xRange', 'zRange'] as const) {
     const r = options[key];
     if (r === undefined) continue;
-    assertVector(where, key, r, 2);
-    if (!(r[1] > r[0])) throw new RangeError(`${where}: ${key}[1] must be > ${key}[0], got ${describe(r)}`);
+    check.assertVector(where, key, r, 2);
+    if (!(r[1] > r[0])) throw new RangeError(`${where}: ${key}[1] must be > ${key}[0], got ${check.describe(r)}`);
   }
 }
 
@@ -394,8 +383,8 @@ function writeFluid(world: PhysicsWorld, eid: number, options: FluidRegionOption
 export function addFluidRegion(world: PhysicsWorld, options: FluidRegionOptions & { surface: number; density: number }): number {
   const where = 'addFluidRegion';
   checkFluid(where, options);
-  assertFinite(where, 'surface', options.surface);
-  assertPositive(where, 'density', options.density);
+  check.assertFinite(where, 'surface', options.surface);
+  check.assertPositive(where, 'density', options.density);
   const eid = createSlot(world, where);
   addComponent(world, eid, world.components.FluidRegion);
   writeFluid(world, eid, options);
@@ -449,7 +438,7 @@ export interface SpringOptions {
  */
 export function addSpring(world: PhysicsWorld, options: SpringOptions): number {
   const where = 'addSpring';
-  assertOptions(where, options, ['a', 'anchor', 'b', 'stiffness', 'restLength', 'damping', 'oneSided']);
+  check.assertOptions(where, options, ['a', 'anchor', 'b', 'stiffness', 'restLength', 'damping', 'oneSided']);
   if ((options.a === undefined) === (options.anchor === undefined)) {
     throw new RangeError(`${where}: give exactly one of a (a body) and anchor (a point)`);
   }
@@ -459,12 +448,12 @@ export function addSpring(world: PhysicsWorld, options: SpringOptions): number {
     a = resolveKind(world, options.a, 'body', where, 'a');
     if (a === b) throw new RangeError(`${where}: a and b are the same entity ${options.a}`);
   } else {
-    assertVector(where, 'anchor', options.anchor, world.dimensions);
+    check.assertVector(where, 'anchor', options.anchor, world.dimensions);
   }
-  assertNonNegative(where, 'stiffness', options.stiffness);
-  if (options.damping !== undefined) assertNonNegative(where, 'damping', options.damping);
-  if (options.restLength !== undefined) assertNonNegative(where, 'restLength', options.restLength);
-  assertOptionalBoolean(where, 'oneSided', options.oneSided);
+  check.assertNonNegative(where, 'stiffness', options.stiffness);
+  if (options.damping !== undefined) check.assertNonNegative(where, 'damping', options.damping);
+  if (options.restLength !== undefined) check.assertNonNegative(where, 'restLength', options.restLength);
+  check.assertOptionalBoolean(where, 'oneSided', options.oneSided);
   const c = world.components;
   const P = c.Position;
   const [ax, ay, az] = a !== 0 ? [P.x[a]!, P.y[a]!, P.z[a]!] : vec3(world, options.anchor!);
@@ -512,14 +501,14 @@ export interface SpringSettings {
 export function setSpring(world: PhysicsWorld, spring: number, options: SpringSettings): void {
   const where = 'setSpring';
   const s = resolveKind(world, spring, 'spring', where);
-  assertOptions(where, options, ['stiffness', 'restLength', 'damping', 'oneSided', 'anchor']);
-  if (options.stiffness !== undefined) assertNonNegative(where, 'stiffness', options.stiffness);
-  if (options.restLength !== undefined) assertNonNegative(where, 'restLength', options.restLength);
-  if (options.damping !== undefined) assertNonNegative(where, 'damping', options.damping);
-  assertOptionalBoolean(where, 'oneSided', options.oneSided);
+  check.assertOptions(where, options, ['stiffness', 'restLength', 'damping', 'oneSided', 'anchor']);
+  if (options.stiffness !== undefined) check.assertNonNegative(where, 'stiffness', options.stiffness);
+  if (options.restLength !== undefined) check.assertNonNegative(where, 'restLength', options.restLength);
+  if (options.damping !== undefined) check.assertNonNegative(where, 'damping', options.damping);
+  check.assertOptionalBoolean(where, 'oneSided', options.oneSided);
   const S = world.components.Spring;
   if (options.anchor !== undefined) {
-    assertVector(where, 'anchor', options.anchor, world.dimensions);
+    check.assertVector(where, 'anchor', options.anchor, world.dimensions);
     if (S.a[s] !== 0) throw new RangeError(`${where}: anchor is only for a spring with a fixed end; spring ${spring} joins two bodies`);
   }
   if (options.stiffness !== undefined) S.stiffness[s] = options.stiffness;
@@ -542,9 +531,9 @@ export function setDrivingForce(
 ): void {
   const where = 'setDrivingForce';
   const eid = optionsBody(world, body, where, options, ['amplitude', 'omega', 'phase']);
-  assertVector(where, 'amplitude', options.amplitude, world.dimensions);
-  assertNonNegative(where, 'omega', options.omega);
-  if (options.phase !== undefined) assertFinite(where, 'phase', options.phase);
+  check.assertVector(where, 'amplitude', options.amplitude, world.dimensions);
+  check.assertNonNegative(where, 'omega', options.omega);
+  if (options.phase !== undefined) check.assertFinite(where, 'phase', options.phase);
   const c = world.components;
   addComponentIfMissing(world, eid, c.DrivingForce);
   const D = c.DrivingForce;
@@ -566,9 +555,9 @@ export function setRandomForce(
 ): void {
   const where = 'setRandomForce';
   const eid = optionsBody(world, body, where, options, ['magnitude', 'correlationTime', 'seed']);
-  assertNonNegative(where, 'magnitude', options.magnitude);
-  assertPositive(where, 'correlationTime', options.correlationTime);
-  if (options.seed !== undefined) assertInteger(where, 'seed', options.seed, -2147483648, 4294967295);
+  check.assertNonNegative(where, 'magnitude', options.magnitude);
+  check.assertPositive(where, 'correlationTime', options.correlationTime);
+  if (options.seed !== undefined) check.assertInteger(where, 'seed', options.seed, -2147483648, 4294967295);
   const c = world.components;
   addComponentIfMissing(world, eid, c.RandomForce);
   c.RandomForce.magnitude[eid] = options.magnitude;
@@ -590,10 +579,10 @@ export function setThrust(
 ): void {
   const where = 'setThrust';
   const eid = optionsBody(world, body, where, options, ['exhaustVelocity', 'massFlowRate', 'fuel', 'direction']);
-  assertPositive(where, 'exhaustVelocity', options.exhaustVelocity);
-  assertNonNegative(where, 'massFlowRate', options.massFlowRate);
-  assertNonNegative(where, 'fuel', options.fuel);
-  const [dx, dy, dz] = unitVector(where, 'direction', options.direction, world.dimensions);
+  check.assertPositive(where, 'exhaustVelocity', options.exhaustVelocity);
+  check.assertNonNegative(where, 'massFlowRate', options.massFlowRate);
+  check.assertNonNegative(where, 'fuel', options.fuel);
+  const [dx, dy, dz] = check.unitVector(where, 'direction', options.direction, world.dimensions);
   const c = world.components;
   if (!hasComponent(world, eid, c.Mass) || !(c.Mass.value[eid]! > 0)) throw new RangeError(`${where}: entity ${eid} has no positive mass`);
   if (!(options.fuel < c.Mass.value[eid]!)) {
@@ -623,10 +612,10 @@ export function setVortex(
 ): void {
   const where = 'setVortex';
   const eid = optionsBody(world, body, where, options, ['centre', 'k', 'n', 'axis']);
-  assertVector(where, 'centre', options.centre, world.dimensions);
-  assertFinite(where, 'k', options.k);
-  if (options.n !== undefined) assertFinite(where, 'n', options.n);
-  const [ax, ay, az] = options.axis === undefined ? [0, 0, 1] : unitVector(where, 'axis', options.axis, 3);
+  check.assertVector(where, 'centre', options.centre, world.dimensions);
+  check.assertFinite(where, 'k', options.k);
+  if (options.n !== undefined) check.assertFinite(where, 'n', options.n);
+  const [ax, ay, az] = options.axis === undefined ? [0, 0, 1] : check.unitVector(where, 'axis', options.axis, 3);
   const c = world.components;
   addComponentIfMissing(world, eid, c.Vortex);
   const V = c.Vortex;

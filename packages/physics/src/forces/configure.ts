@@ -5,15 +5,7 @@
 
 import { cosine } from '../math/cosine.js';
 import { Rng } from '../math/rng.js';
-import {
-  assertFinite,
-  assertInteger,
-  assertNonNegative,
-  assertOneOf,
-  assertOptions,
-  assertPositive,
-  assertVector,
-} from '../validation/validate.js';
+import * as check from '../validation/validate.js';
 import { type GravityMethod, MAX_WIND_MODES } from '../world/force-settings.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { barnesHutGravity } from './barnes-hut/tree.js';
@@ -43,11 +35,11 @@ export interface GravitationOptions {
  */
 export function setGravitation(world: PhysicsWorld, options: GravitationOptions): void {
   const where = 'setGravitation';
-  assertOptions(where, options, ['constant', 'softening', 'method', 'openingAngle']);
-  if (options.constant !== undefined) assertNonNegative(where, 'constant', options.constant);
-  if (options.softening !== undefined) assertNonNegative(where, 'softening', options.softening);
-  if (options.method !== undefined) assertOneOf(where, 'method', options.method, ['direct', 'barnes-hut']);
-  if (options.openingAngle !== undefined) assertPositive(where, 'openingAngle', options.openingAngle);
+  check.assertOptions(where, options, ['constant', 'softening', 'method', 'openingAngle']);
+  if (options.constant !== undefined) check.assertNonNegative(where, 'constant', options.constant);
+  if (options.softening !== undefined) check.assertNonNegative(where, 'softening', options.softening);
+  if (options.method !== undefined) check.assertOneOf(where, 'method', options.method, ['direct', 'barnes-hut']);
+  if (options.openingAngle !== undefined) check.assertPositive(where, 'openingAngle', options.openingAngle);
   const L = world.laws;
   if (options.constant !== undefined) L.gravitationalConstant = options.constant;
   if (options.softening !== undefined) L.gravitySoftening = options.softening;
@@ -64,9 +56,9 @@ export function setGravitation(world: PhysicsWorld, options: GravitationOptions)
  */
 export function setElectrostatics(world: PhysicsWorld, options: { constant?: number; softening?: number }): void {
   const where = 'setElectrostatics';
-  assertOptions(where, options, ['constant', 'softening']);
-  if (options.constant !== undefined) assertNonNegative(where, 'constant', options.constant);
-  if (options.softening !== undefined) assertNonNegative(where, 'softening', options.softening);
+  check.assertOptions(where, options, ['constant', 'softening']);
+  if (options.constant !== undefined) check.assertNonNegative(where, 'constant', options.constant);
+  if (options.softening !== undefined) check.assertNonNegative(where, 'softening', options.softening);
   if (options.constant !== undefined) world.laws.coulombConstant = options.constant;
   if (options.softening !== undefined) world.laws.electricSoftening = options.softening;
 }
@@ -96,20 +88,20 @@ export interface WindOptions {
  */
 export function setWind(world: PhysicsWorld, options: WindOptions): void {
   const where = 'setWind';
-  assertOptions(where, options, ['velocity', 'gust', 'gustOmega', 'gustPhase', 'turbulence']);
+  check.assertOptions(where, options, ['velocity', 'gust', 'gustOmega', 'gustPhase', 'turbulence']);
   const d = world.dimensions;
-  if (options.velocity !== undefined) assertVector(where, 'velocity', options.velocity, d);
-  if (options.gust !== undefined) assertVector(where, 'gust', options.gust, d);
-  if (options.gustOmega !== undefined) assertNonNegative(where, 'gustOmega', options.gustOmega);
-  if (options.gustPhase !== undefined) assertFinite(where, 'gustPhase', options.gustPhase);
+  if (options.velocity !== undefined) check.assertVector(where, 'velocity', options.velocity, d);
+  if (options.gust !== undefined) check.assertVector(where, 'gust', options.gust, d);
+  if (options.gustOmega !== undefined) check.assertNonNegative(where, 'gustOmega', options.gustOmega);
+  if (options.gustPhase !== undefined) check.assertFinite(where, 'gustPhase', options.gustPhase);
   const t = options.turbulence;
   if (t !== undefined) {
-    assertOptions(where, t, ['intensity', 'lengthScale', 'timeScale', 'seed', 'modes'], 'turbulence');
-    assertNonNegative(where, 'turbulence.intensity', t.intensity);
-    assertPositive(where, 'turbulence.lengthScale', t.lengthScale);
-    assertPositive(where, 'turbulence.timeScale', t.timeScale);
-    if (t.seed !== undefined) assertFinite(where, 'turbulence.seed', t.seed);
-    assertInteger(where, 'turbulence.modes', t.modes ?? 16, 1, MAX_WIND_MODES);
+    check.assertOptions(where, t, ['intensity', 'lengthScale', 'timeScale', 'seed', 'modes'], 'turbulence');
+    check.assertNonNegative(where, 'turbulence.intensity', t.intensity);
+    check.assertPositive(where, 'turbulence.lengthScale', t.lengthScale);
+    check.assertPositive(where, 'turbulence.timeScale', t.timeScale);
+    if (t.seed !== undefined) check.assertFinite(where, 'turbulence.seed', t.seed);
+    check.assertInteger(where, 'turbulence.modes', t.modes ?? 16, 1, MAX_WIND_MODES);
   }
   const w = world.laws.wind;
   w.velocity.fill(0);

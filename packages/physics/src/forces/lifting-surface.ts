@@ -1,14 +1,5 @@
 import { addComponent, entityExists, hasComponent, removeEntity } from 'bitecs';
-import {
-  assertFinite,
-  assertInRange,
-  assertNonNegative,
-  assertOptions,
-  assertPositive,
-  assertVector,
-  describe,
-  unitVector,
-} from '../validation/validate.js';
+import * as check from '../validation/validate.js';
 import { createSlot, currentHandle, resolveEntity, resolveKind } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { addComponentIfMissing } from '../world/options.js';
@@ -84,31 +75,31 @@ export const DEFAULT_LIFT_SLOPE = (2 * Math.PI) / (1 + 2 / 6);
 export function addLiftingSurface(world: PhysicsWorld, options: LiftingSurfaceOptions): number {
   const where = 'addLiftingSurface';
   if (world.dimensions !== 3) throw new RangeError(`${where}: lifting surfaces need a 3D world, got dimensions ${world.dimensions}`);
-  assertOptions(where, options, KNOWN);
+  check.assertOptions(where, options, KNOWN);
   const c = world.components;
   const b = resolveKind(world, options.body, 'body', where, 'body');
   if (hasComponent(world, b, c.Static) || hasComponent(world, b, c.Kinematic) || !hasComponent(world, b, c.AngularVelocity)) {
     throw new RangeError(`${where}: body ${options.body} must be dynamic and turn (give it an inertia with setInertia)`);
   }
   const offset = options.offset ?? [0, 0, 0];
-  assertVector(where, 'offset', offset, 3);
+  check.assertVector(where, 'offset', offset, 3);
   const normal = options.normal ?? [0, 1, 0];
-  const unit = unitVector(where, 'normal', normal, 3);
+  const unit = check.unitVector(where, 'normal', normal, 3);
   if (Math.hypot(unit[1], unit[2]) < 1e-6)
-    throw new RangeError(`${where}: normal must not lie along the chord (body x), got ${describe(normal)}`);
-  assertPositive(where, 'area', options.area);
+    throw new RangeError(`${where}: normal must not lie along the chord (body x), got ${check.describe(normal)}`);
+  check.assertPositive(where, 'area', options.area);
   const slope = options.liftSlope ?? DEFAULT_LIFT_SLOPE;
-  assertNonNegative(where, 'liftSlope', slope);
+  check.assertNonNegative(where, 'liftSlope', slope);
   const stall = options.stallAngle ?? (20 * Math.PI) / 180;
-  assertInRange(where, 'stallAngle', stall, 1e-6, Math.PI / 2 - 1e-6);
+  check.assertInRange(where, 'stallAngle', stall, 1e-6, Math.PI / 2 - 1e-6);
   const cd0 = options.dragZero ?? 0.02;
-  assertNonNegative(where, 'dragZero', cd0);
+  check.assertNonNegative(where, 'dragZero', cd0);
   const k = options.inducedDrag ?? 0.06;
-  assertNonNegative(where, 'inducedDrag', k);
+  check.assertNonNegative(where, 'inducedDrag', k);
   const power = options.controlPower ?? 0;
-  assertNonNegative(where, 'controlPower', power);
+  check.assertNonNegative(where, 'controlPower', power);
   const rho = options.airDensity ?? 1.225;
-  assertPositive(where, 'airDensity', rho);
+  check.assertPositive(where, 'airDensity', rho);
   addComponentIfMissing(world, b, c.Force);
   addComponentIfMissing(world, b, c.Torque);
   if (!world.removeHooks.includes(removeSurfacesOf)) world.removeHooks.push(removeSurfacesOf);
@@ -157,8 +148,8 @@ export function setControlDeflection(world: PhysicsWorld, surface: number, defle
   const slot = resolveEntity(world, surface, where, 'surface');
   if (!hasComponent(world, slot, L))
     throw new RangeError(`${where}: surface must be a lifting surface (addLiftingSurface makes one), got entity ${surface}`);
-  assertFinite(where, 'deflection', deflection);
-  assertInRange(where, 'deflection', deflection, -Math.PI / 4, Math.PI / 4);
+  check.assertFinite(where, 'deflection', deflection);
+  check.assertInRange(where, 'deflection', deflection, -Math.PI / 4, Math.PI / 4);
   L.deflection[slot] = deflection;
 }
 

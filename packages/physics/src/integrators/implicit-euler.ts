@@ -1,16 +1,7 @@
 import { rotateFrom } from '../math/quaternion.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { advanceKinematic } from './semi-implicit-euler.js';
-import {
-  accelerationsAt,
-  checkFinite,
-  gather,
-  getScratch,
-  type IntegratorScratch,
-  saveState,
-  shiftByGravity,
-  stageSlopes,
-} from './state.js';
+import * as IS from './state.js';
 
 /** Newton iterations before implicit Euler gives up on a step. */
 const MAX_NEWTON = 30;
@@ -100,11 +91,11 @@ let lastResidual = 0;
  * if Newton does not converge.
  */
 function implicitStep(world: PhysicsWorld, h: number, t: number, evaluate: boolean, setPrevious: boolean): boolean {
-  const s = getScratch(world);
+  const s = IS.getScratch(world);
   s.bodyFrameSpin = false; // this scheme's Newton solve works on world-frame w and alpha
-  gather(world, s);
-  saveState(world, s, setPrevious);
-  stageSlopes(world, s, t, evaluate);
+  IS.gather(world, s);
+  IS.saveState(world, s, setPrevious);
+  IS.stageSlopes(world, s, t, evaluate);
   const nm = s.nMovers,
     ns = s.nSpinners;
   const n = 3 * (nm + ns);
@@ -124,7 +115,7 @@ function implicitStep(world: PhysicsWorld, h: number, t: number, evaluate: boole
 
   for (let it = 0; it <= MAX_NEWTON; it++) {
     writeState(world, s, h, u);
-    accelerationsAt(world, s, t + h);
+    IS.accelerationsAt(world, s, t + h);
     pack(s, s.acc, 0, s.alpha, A);
     let residual = 0;
     for (let i = 0; i < n; i++) {
@@ -134,13 +125,13 @@ function implicitStep(world: PhysicsWorld, h: number, t: number, evaluate: boole
     }
     if (residual <= tol) {
       // The drift used the end velocity; gravity's share of it is made exact (see shiftByGravity).
-      shiftByGravity(world, s, -0.5 * h * h);
-      checkFinite(world, s);
+      IS.shiftByGravity(world, s, -0.5 * h * h);
+      IS.checkFinite(world, s);
       return true;
     }
     lastResidual = residual;
     // A NaN or infinite residual from a non-finite state (not a hard Newton step): name it, as every scheme does.
-    if (!(residual < Infinity)) checkFinite(world, s);
+    if (!(residual < Infinity)) IS.checkFinite(world, s);
     if (it === MAX_NEWTON || !(residual < Infinity)) break;
     solveBiCGStab(world, s, h, t, W, n);
     for (let i = 0; i < n; i++) u[i] = u[i]! + d[i]!;
@@ -155,7 +146,7 @@ function implicitStep(world: PhysicsWorld, h: number, t: number, evaluate: boole
  * spinner's angular[0], angular[1], angular[2] (the layout of u: start velocities from x0 and w0,
  * accelerations from acc and alpha).
  */
-function pack(s: IntegratorScratch, linear: Float64Array[], at: number, angular: Float64Array[], out: Float64Array): void {
+function pack(s: IS.IntegratorScratch, linear: Float64Array[], at: number, angular: Float64Array[], out: Float64Array): void {
   const ax = linear[at]!,
     ay = linear[at + 1]!,
     az = linear[at + 2]!;
@@ -178,7 +169,7 @@ function pack(s: IntegratorScratch, linear: Float64Array[], at: number, angular:
 }
 
 /** Writes the end state implied by end velocities u: v = u, x = x0 + h u; w = u, orientation turned by h w. */
-function writeState(world: PhysicsWorld, s: IntegratorScratch, h: number, u: Float64Array): void {
+function writeState(world: PhysicsWorld, s: IS.IntegratorScratch, h: number, u: Float64Array): void {
   const c = world.components;
   const { x: px, y: py, z: pz } = c.Position;
   const { x: vx, y: vy, z: vz } = c.Velocity;
@@ -231,7 +222,7 @@ function dot(a: Float64Array, b: Float64Array, n: number): number {
 /** out = J p with J = I - h da/du, by a forward difference of the accelerations (one force evaluation). */
 function jacobianTimes(
   world: PhysicsWorld,
-  s: IntegratorScratch,
+  s: IS.IntegratorScratch,
   h: number,
   t: number,
   W: Work,
@@ -253,14 +244,14 @@ function jacobianTimes(
   const eps = (Math.sqrt(Number.EPSILON) * (1 + un)) / pn;
   for (let i = 0; i < n; i++) w[i] = u[i]! + eps * p[i]!;
   writeState(world, s, h, w);
-  accelerationsAt(world, s, t + h);
+  IS.accelerationsAt(world, s, t + h);
   pack(s, s.acc, 0, s.alpha, W.Ap);
   const Ap = W.Ap;
   for (let i = 0; i < n; i++) out[i] = p[i]! - (h * (Ap[i]! - A[i]!)) / eps;
 }
 
 /** BiCGSTAB for J d = b with b = W.R (already -R); result in W.d. A is the accelerations at u. */
-function solveBiCGStab(world: PhysicsWorld, s: IntegratorScratch, h: number, t: number, W: Work, n: number): void {
+function solveBiCGStab(world: PhysicsWorld, s: IS.IntegratorScratch, h: number, t: number, W: Work, n: number): void {
   const { R: b, d, r, rh, p, v, s: sv, t: tv } = W;
   d.fill(0, 0, n);
   for (let i = 0; i < n; i++) {

@@ -1,19 +1,7 @@
 import { rotateFrom, rotateVector } from '../math/quaternion.js';
 import type { PhysicsWorld, System } from '../world/options.js';
 import { advanceKinematic } from './semi-implicit-euler.js';
-import {
-  accelerationsAt,
-  accumulate,
-  checkFinite,
-  gather,
-  getScratch,
-  type IntegratorScratch,
-  saveState,
-  shiftByGravity,
-  stageSlopes,
-  sumGroups,
-  writeTrial,
-} from './state.js';
+import * as IS from './state.js';
 
 /**
  * The explicit and multi-stage integration schemes. Each advances every moving body by h from the
@@ -25,16 +13,16 @@ import {
  * bodies where they were at the start of the step during trial stages).
  */
 
-function begin(world: PhysicsWorld): IntegratorScratch {
-  const s = getScratch(world);
+function begin(world: PhysicsWorld): IS.IntegratorScratch {
+  const s = IS.getScratch(world);
   s.bodyFrameSpin = true;
-  gather(world, s);
-  saveState(world, s);
+  IS.gather(world, s);
+  IS.saveState(world, s);
   return s;
 }
 
-function end(world: PhysicsWorld, s: IntegratorScratch, h: number): void {
-  checkFinite(world, s);
+function end(world: PhysicsWorld, s: IS.IntegratorScratch, h: number): void {
+  IS.checkFinite(world, s);
   advanceKinematic(world, h);
 }
 
@@ -47,9 +35,9 @@ function end(world: PhysicsWorld, s: IntegratorScratch, h: number): void {
  */
 export function explicitEuler(world: PhysicsWorld, h: number): void {
   const s = begin(world);
-  stageSlopes(world, s, world.time, false);
-  writeTrial(world, s, h, s.kv, h, s.acc, h, s.kq, h, s.alpha);
-  shiftByGravity(world, s, 0.5 * h * h);
+  IS.stageSlopes(world, s, world.time, false);
+  IS.writeTrial(world, s, h, s.kv, h, s.acc, h, s.kq, h, s.alpha);
+  IS.shiftByGravity(world, s, 0.5 * h * h);
   end(world, s, h);
 }
 
@@ -61,13 +49,13 @@ export function explicitEuler(world: PhysicsWorld, h: number): void {
 export function rk2(world: PhysicsWorld, h: number): void {
   const s = begin(world);
   const t = world.time;
-  stageSlopes(world, s, t, false);
-  accumulate(world, s, 0.5, true);
-  writeTrial(world, s, h, s.kv, h, s.acc, h, s.kq, h, s.alpha);
-  stageSlopes(world, s, t + h, true);
-  accumulate(world, s, 0.5, false);
-  const [sx, sv, sq, sw] = sumGroups(s);
-  writeTrial(world, s, h, sx, h, sv, h, sq, h, sw);
+  IS.stageSlopes(world, s, t, false);
+  IS.accumulate(world, s, 0.5, true);
+  IS.writeTrial(world, s, h, s.kv, h, s.acc, h, s.kq, h, s.alpha);
+  IS.stageSlopes(world, s, t + h, true);
+  IS.accumulate(world, s, 0.5, false);
+  const [sx, sv, sq, sw] = IS.sumGroups(s);
+  IS.writeTrial(world, s, h, sx, h, sv, h, sq, h, sw);
   end(world, s, h);
 }
 
@@ -80,19 +68,19 @@ export function rk2(world: PhysicsWorld, h: number): void {
 export function rk4(world: PhysicsWorld, h: number): void {
   const s = begin(world);
   const t = world.time;
-  stageSlopes(world, s, t, false);
-  accumulate(world, s, 1 / 6, true);
-  writeTrial(world, s, h / 2, s.kv, h / 2, s.acc, h / 2, s.kq, h / 2, s.alpha);
-  stageSlopes(world, s, t + h / 2, true);
-  accumulate(world, s, 2 / 6, false);
-  writeTrial(world, s, h / 2, s.kv, h / 2, s.acc, h / 2, s.kq, h / 2, s.alpha);
-  stageSlopes(world, s, t + h / 2, true);
-  accumulate(world, s, 2 / 6, false);
-  writeTrial(world, s, h, s.kv, h, s.acc, h, s.kq, h, s.alpha);
-  stageSlopes(world, s, t + h, true);
-  accumulate(world, s, 1 / 6, false);
-  const [sx, sv, sq, sw] = sumGroups(s);
-  writeTrial(world, s, h, sx, h, sv, h, sq, h, sw);
+  IS.stageSlopes(world, s, t, false);
+  IS.accumulate(world, s, 1 / 6, true);
+  IS.writeTrial(world, s, h / 2, s.kv, h / 2, s.acc, h / 2, s.kq, h / 2, s.alpha);
+  IS.stageSlopes(world, s, t + h / 2, true);
+  IS.accumulate(world, s, 2 / 6, false);
+  IS.writeTrial(world, s, h / 2, s.kv, h / 2, s.acc, h / 2, s.kq, h / 2, s.alpha);
+  IS.stageSlopes(world, s, t + h / 2, true);
+  IS.accumulate(world, s, 2 / 6, false);
+  IS.writeTrial(world, s, h, s.kv, h, s.acc, h, s.kq, h, s.alpha);
+  IS.stageSlopes(world, s, t + h, true);
+  IS.accumulate(world, s, 1 / 6, false);
+  const [sx, sv, sq, sw] = IS.sumGroups(s);
+  IS.writeTrial(world, s, h, sx, h, sv, h, sq, h, sw);
   end(world, s, h);
 }
 
@@ -126,13 +114,13 @@ export function positionVerlet(world: PhysicsWorld, h: number): void {
   const s = begin(world);
   const t = world.time;
   const c = world.components;
-  stageSlopes(world, s, t, false);
+  IS.stageSlopes(world, s, t, false);
   // Drift half a step with the start velocity.
-  writeTrial(world, s, h / 2, s.kv, 0, s.acc, h / 2, s.kq, 0, s.alpha);
-  accelerationsAt(world, s, t + h / 2);
+  IS.writeTrial(world, s, h / 2, s.kv, 0, s.acc, h / 2, s.kq, 0, s.alpha);
+  IS.accelerationsAt(world, s, t + h / 2);
   if (hasVelocityDependentForces(world)) {
-    writeTrial(world, s, h / 2, s.kv, h / 2, s.acc, h / 2, s.kq, h / 2, s.alpha);
-    accelerationsAt(world, s, t + h / 2);
+    IS.writeTrial(world, s, h / 2, s.kv, h / 2, s.acc, h / 2, s.kq, h / 2, s.alpha);
+    IS.accelerationsAt(world, s, t + h / 2);
   }
   // Kick, then drift the second half with the new velocity: x = x0 + h/2 (v0 + v1).
   const { x: px, y: py, z: pz } = c.Position;
@@ -170,9 +158,9 @@ export function velocityVerlet(world: PhysicsWorld, h: number): void {
   const s = begin(world);
   const t = world.time;
   const c = world.components;
-  stageSlopes(world, s, t, false);
+  IS.stageSlopes(world, s, t, false);
   // Keep a(t) in the sum arrays: acc is overwritten by the next evaluation.
-  accumulate(world, s, 1, true);
+  IS.accumulate(world, s, 1, true);
   // Drift with the half-kicked velocity; predicted end velocity for velocity-dependent laws.
   const { x: px, y: py, z: pz } = c.Position;
   const { x: vx, y: vy, z: vz } = c.Velocity;
@@ -192,7 +180,7 @@ export function velocityVerlet(world: PhysicsWorld, h: number): void {
     vz[e] = w0[e]! + h * a0z[e]!;
   }
   spinHalfKickHalf(world, s, h, 'kdk-drift');
-  accelerationsAt(world, s, t + h);
+  IS.accelerationsAt(world, s, t + h);
   const [ax, ay, az] = s.acc as [Float64Array, Float64Array, Float64Array];
   for (let i = 0; i < s.nMovers; i++) {
     const e = m[i]!;
@@ -213,7 +201,7 @@ export function velocityVerlet(world: PhysicsWorld, h: number): void {
  * - 'kdk-kick': w1 = w_{1/2} + alpha1 h/2.
  * The orientation update rotates by the given rotation vector exactly (unit quaternions stay unit).
  */
-function spinHalfKickHalf(world: PhysicsWorld, s: IntegratorScratch, h: number, phase: 'dkd' | 'kdk-drift' | 'kdk-kick'): void {
+function spinHalfKickHalf(world: PhysicsWorld, s: IS.IntegratorScratch, h: number, phase: 'dkd' | 'kdk-drift' | 'kdk-kick'): void {
   if (s.nSpinners === 0) return;
   const c = world.components;
   const { x: wx, y: wy, z: wz } = c.AngularVelocity;
@@ -282,7 +270,7 @@ function spinBodyFrame(
   wx: Float64Array,
   wy: Float64Array,
   wz: Float64Array,
-  s: IntegratorScratch,
+  s: IS.IntegratorScratch,
   e: number,
   h: number,
   phase: 'dkd' | 'kdk-drift' | 'kdk-kick',

@@ -3,16 +3,7 @@ import { currentHandle } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { centre, type Joint3DBaseOptions, make, requireJoint3D, unit, wakeJoint3D } from './joint-3d.js';
 import { checkEnds, optionalPoint } from './joint-base.js';
-import {
-  type JointPass3D,
-  type JointRows3D,
-  limitSoft,
-  limitSoftness,
-  pointJointReading,
-  preparePointBlock,
-  solvePointRows,
-  warmStartPointAndLock,
-} from './rows-3d.js';
+import * as R3 from './rows-3d.js';
 import { applyAngular, ax, bx, qa, qb, relativeSpin, rot, row3D } from './rows-3d-math.js';
 import { Joint3DFlag, Joint3DType, joints3DOf } from './store-3d.js';
 
@@ -90,7 +81,7 @@ function checkConeAngle(where: string, coneAngle: unknown): void {
 }
 
 /** The cone's swing axis n = a_A x a_B, not normalised, into n3, of ball joint j's cone axis turned with A (into ax) and with B (into bx); @returns |n|. */
-function coneNormal(p: JointPass3D, j: number): number {
+function coneNormal(p: R3.JointPass3D, j: number): number {
   const s = p.s;
   rot(qa, s.uax[j]!, s.uay[j]!, s.uaz[j]!, ax);
   rot(qb, s.ubx[j]!, s.uby[j]!, s.ubz[j]!, bx);
@@ -104,7 +95,7 @@ function coneNormal(p: JointPass3D, j: number): number {
 const n3 = new Float64Array(3);
 
 /** A ball joint's cone: the angle between A's axis and B's stays within the half angle (s.upper). */
-function solveCone(p: JointPass3D, j: number, a: number, b: number): void {
+function solveCone(p: R3.JointPass3D, j: number, a: number, b: number): void {
   const s = p.s;
   const sn = coneNormal(p, j);
   let nx = n3[0]!,
@@ -117,7 +108,7 @@ function solveCone(p: JointPass3D, j: number, a: number, b: number): void {
     // The swing phi about n, d phi / dt = (wB - wA) . n; the row C = half angle - phi >= 0 acts about -n.
     const phi = Math.atan2(sn, ax[0]! * bx[0]! + ax[1]! * bx[1]! + ax[2]! * bx[2]!);
     const cdot = -relativeSpin(p.sb, a, b, nx, ny, nz);
-    limitSoftness(p, s.upper[j]! - phi);
+    R3.limitSoftness(p, s.upper[j]! - phi);
     s.limit[j] = row3D(
       p.sb,
       p.T,
@@ -129,9 +120,9 @@ function solveCone(p: JointPass3D, j: number, a: number, b: number): void {
       -nz,
       0,
       cdot,
-      limitSoft[0]!,
-      limitSoft[1]!,
-      limitSoft[2]!,
+      R3.limitSoft[0]!,
+      R3.limitSoft[1]!,
+      R3.limitSoft[2]!,
       s.limit[j]!,
       0,
       Infinity,
@@ -140,9 +131,9 @@ function solveCone(p: JointPass3D, j: number, a: number, b: number): void {
 }
 
 /** A ball-and-socket joint: the point block, then its cone limit if it has one. */
-export function solveBallRow3D(p: JointPass3D, j: number, a: number, b: number, flags: number): void {
-  preparePointBlock(p, a, b);
-  solvePointRows(p, j, a, b);
+export function solveBallRow3D(p: R3.JointPass3D, j: number, a: number, b: number, flags: number): void {
+  R3.preparePointBlock(p, a, b);
+  R3.solvePointRows(p, j, a, b);
   if (flags & Joint3DFlag.Cone) solveCone(p, j, a, b);
 }
 
@@ -151,8 +142,8 @@ export function solveBallRow3D(p: JointPass3D, j: number, a: number, b: number, 
  * cone's impulse (limit, >= 0) about -n, n = a_A x a_B / |a_A x a_B| as in the solve; none when the axes
  * are parallel (n undefined).
  */
-export function warmStartBallRow3D(p: JointPass3D, j: number, a: number, b: number): void {
-  warmStartPointAndLock(p, j, a, b);
+export function warmStartBallRow3D(p: R3.JointPass3D, j: number, a: number, b: number): void {
+  R3.warmStartPointAndLock(p, j, a, b);
   const { s, sb, T } = p;
   if (s.limit[j]! !== 0) {
     const sn = coneNormal(p, j),
@@ -162,4 +153,4 @@ export function warmStartBallRow3D(p: JointPass3D, j: number, a: number, b: numb
 }
 
 /** The 3D ball joint's rows (rows-3d.ts JointRows3D). */
-export const BALL_ROWS_3D: JointRows3D = { warmStart: warmStartBallRow3D, solve: solveBallRow3D, reading: pointJointReading };
+export const BALL_ROWS_3D: R3.JointRows3D = { warmStart: warmStartBallRow3D, solve: solveBallRow3D, reading: R3.pointJointReading };

@@ -2,16 +2,7 @@ import { currentHandle } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { centre, type Joint3DBaseOptions, make } from './joint-3d.js';
 import { checkEnds, optionalPoint } from './joint-base.js';
-import {
-  errorRotation,
-  type JointPass3D,
-  type JointRows3D,
-  pointJointReading,
-  preparePointBlock,
-  solveAngularLock,
-  solvePointRows,
-  warmStartPointAndLock,
-} from './rows-3d.js';
+import * as R3 from './rows-3d.js';
 import { Joint3DType } from './store-3d.js';
 
 /**
@@ -41,12 +32,12 @@ export function addFixedJoint3D(world: PhysicsWorld, options: FixedJoint3DOption
 }
 
 /** A fixed joint: the three angular rows, then the point block. */
-export function solveFixedRow3D(p: JointPass3D, j: number, a: number, b: number, _flags: number): void {
-  errorRotation(p, j);
-  solveAngularLock(p, j, a, b, false);
-  preparePointBlock(p, a, b);
-  solvePointRows(p, j, a, b);
+export function solveFixedRow3D(p: R3.JointPass3D, j: number, a: number, b: number, _flags: number): void {
+  R3.errorRotation(p, j);
+  R3.solveAngularLock(p, j, a, b, false);
+  R3.preparePointBlock(p, a, b);
+  R3.solvePointRows(p, j, a, b);
 }
 
 /** The 3D fixed joint's rows (rows-3d.ts JointRows3D). */
-export const FIXED_ROWS_3D: JointRows3D = { warmStart: warmStartPointAndLock, solve: solveFixedRow3D, reading: pointJointReading };
+export const FIXED_ROWS_3D: R3.JointRows3D = { warmStart: R3.warmStartPointAndLock, solve: solveFixedRow3D, reading: R3.pointJointReading };

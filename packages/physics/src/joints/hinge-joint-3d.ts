@@ -1,18 +1,6 @@
 import type { PhysicsWorld } from '../world/options.js';
 import { type AxisJoint3DKind, addAxisJoint3D, type Joint3DBaseOptions } from './joint-3d.js';
-import {
-  axisLimit3D,
-  axisMotor3D,
-  E,
-  errorRotation,
-  type JointPass3D,
-  type JointRows3D,
-  pointJointReading,
-  preparePointBlock,
-  solveAngularLock,
-  solvePointRows,
-  warmStartAxis3D,
-} from './rows-3d.js';
+import * as R3 from './rows-3d.js';
 import { Joint3DFlag, Joint3DType } from './store-3d.js';
 
 /**
@@ -50,27 +38,27 @@ export function addHingeJoint3D(world: PhysicsWorld, options: HingeJoint3DOption
 }
 
 /** A hinge: the two angular rows across its axis, its motor and angle limit about it, then the point block. */
-export function solveHingeRow3D(p: JointPass3D, j: number, a: number, b: number, flags: number): void {
-  errorRotation(p, j);
-  solveAngularLock(p, j, a, b, true);
+export function solveHingeRow3D(p: R3.JointPass3D, j: number, a: number, b: number, flags: number): void {
+  R3.errorRotation(p, j);
+  R3.solveAngularLock(p, j, a, b, true);
   if (flags & (Joint3DFlag.Limit | Joint3DFlag.Motor)) {
     // About the axis (world, left in bx by the lock), on the angle of the error rotation E.
     const s = p.s;
-    const angle = 2 * Math.atan2(E[0]! * s.uax[j]! + E[1]! * s.uay[j]! + E[2]! * s.uaz[j]!, E[3]!);
-    if (flags & Joint3DFlag.Motor) axisMotor3D(p, j, a, b, false, 0);
-    if (flags & Joint3DFlag.Limit) axisLimit3D(p, j, a, b, false, 0, angle);
+    const angle = 2 * Math.atan2(R3.E[0]! * s.uax[j]! + R3.E[1]! * s.uay[j]! + R3.E[2]! * s.uaz[j]!, R3.E[3]!);
+    if (flags & Joint3DFlag.Motor) R3.axisMotor3D(p, j, a, b, false, 0);
+    if (flags & Joint3DFlag.Limit) R3.axisLimit3D(p, j, a, b, false, 0, angle);
   }
-  preparePointBlock(p, a, b);
-  solvePointRows(p, j, a, b);
+  R3.preparePointBlock(p, a, b);
+  R3.solvePointRows(p, j, a, b);
 }
 
 /** A hinge's warm start: its point and angular-lock impulses, then its limit's and motor's about its axis (turned with A). */
-export function warmStartHingeRow3D(p: JointPass3D, j: number, a: number, b: number): void {
-  warmStartAxis3D(p, j, a, b, false);
+export function warmStartHingeRow3D(p: R3.JointPass3D, j: number, a: number, b: number): void {
+  R3.warmStartAxis3D(p, j, a, b, false);
 }
 
 /** The 3D hinge joint's rows (rows-3d.ts JointRows3D). */
-export const HINGE_ROWS_3D: JointRows3D = { warmStart: warmStartHingeRow3D, solve: solveHingeRow3D, reading: pointJointReading };
+export const HINGE_ROWS_3D: R3.JointRows3D = { warmStart: warmStartHingeRow3D, solve: solveHingeRow3D, reading: R3.pointJointReading };
 
 /** What sets the hinge apart from the other 3D joint along an axis (joint-3d.ts addAxisJoint3D). */
 const HINGE: AxisJoint3DKind = { where: 'addHingeJoint3D', type: Joint3DType.Hinge, rows: HINGE_ROWS_3D, maxName: 'maxMotorTorque' };

@@ -1,13 +1,6 @@
 import { hasComponent } from 'bitecs';
 import { wakeIsland } from '../islands/sleep.js';
-import {
-  assertKnownKeys,
-  assertNonNegative,
-  assertOptionalBoolean,
-  assertPositive,
-  assertVector,
-  describe,
-} from '../validation/validate.js';
+import * as check from '../validation/validate.js';
 import { resolveEntity } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 
@@ -54,8 +47,8 @@ export interface Ends {
  * @category Joints and ropes
  */
 export function assertBreakLimit(where: string, param: string, value: unknown, never = 'never breaks'): void {
-  if (typeof value !== 'number') throw new TypeError(`${where}: ${param} must be a number, got ${describe(value)}`);
-  if (!(value > 0)) throw new RangeError(`${where}: ${param} must be > 0 (Infinity: ${never}), got ${describe(value)}`);
+  if (typeof value !== 'number') throw new TypeError(`${where}: ${param} must be a number, got ${check.describe(value)}`);
+  if (!(value > 0)) throw new RangeError(`${where}: ${param} must be > 0 (Infinity: ${never}), got ${check.describe(value)}`);
 }
 
 /** The slot of body `id` (param `param` of `where`): an entity with position, mass and an angle (2D) or orientation (3D). @throws RangeError otherwise. */
@@ -69,8 +62,8 @@ function requireBody(where: string, param: string, world: PhysicsWorld, id: unkn
   ) {
     throw new RangeError(
       dims === 2
-        ? `${where}: ${param} must be a body with position, mass and angle (made by addBody), got entity ${describe(id)}`
-        : `${where}: ${param} must be a 3D body with position, mass and orientation (addBody, addShape3D), got entity ${describe(id)}`,
+        ? `${where}: ${param} must be a body with position, mass and angle (made by addBody), got entity ${check.describe(id)}`
+        : `${where}: ${param} must be a 3D body with position, mass and orientation (addBody, addShape3D), got entity ${check.describe(id)}`,
     );
   }
   return slot;
@@ -88,15 +81,15 @@ export function checkEnds(where: string, world: PhysicsWorld, options: JointBase
     throw new RangeError(`${where}: ${what} world, this world has ${world.dimensions} dimensions`);
   }
   if (options === undefined || options === null || typeof options !== 'object') {
-    throw new TypeError(`${where}: options must be an object with body b, got ${describe(options)}`);
+    throw new TypeError(`${where}: options must be an object with body b, got ${check.describe(options)}`);
   }
-  if (keys !== undefined) assertKnownKeys(where, options, [...BASE_KEYS, ...keys], ['a']);
+  if (keys !== undefined) check.assertKnownKeys(where, options, [...BASE_KEYS, ...keys], ['a']);
   const a = options.a === undefined || options.a === null ? 0 : requireBody(where, 'a', world, options.a, dims);
   const b = requireBody(where, 'b', world, options.b, dims);
-  if (a === b) throw new RangeError(`${where}: a and b must be different bodies, got ${describe(options.a)} twice`);
+  if (a === b) throw new RangeError(`${where}: a and b must be different bodies, got ${check.describe(options.a)} twice`);
   if (options.breakForce !== undefined) assertBreakLimit(where, 'breakForce', options.breakForce);
   if (options.breakTorque !== undefined) assertBreakLimit(where, 'breakTorque', options.breakTorque);
-  assertOptionalBoolean(where, 'collideConnected', options.collideConnected);
+  check.assertOptionalBoolean(where, 'collideConnected', options.collideConnected);
   return { a, b };
 }
 
@@ -111,7 +104,7 @@ export function optionalPoint<P extends [number, number] | [number, number, numb
   fallback: P,
 ): P {
   if (value === undefined) return fallback;
-  assertVector(where, param, value, fallback.length);
+  check.assertVector(where, param, value, fallback.length);
   return (fallback.length === 2 ? [value[0]!, value[1]!] : [value[0]!, value[1]!, value[2]!]) as P;
 }
 
@@ -147,11 +140,11 @@ export function checkDistance<P extends [number, number] | [number, number, numb
   const pa = optionalPoint(where, 'anchorA', options.anchorA, centreA);
   const pb = optionalPoint(where, 'anchorB', options.anchorB, centreB);
   const length = options.length ?? Math.hypot(...pb.map((v, i) => v - pa[i]!));
-  assertPositive(where, 'length', length);
+  check.assertPositive(where, 'length', length);
   const hertz = options.hertz ?? 0;
-  assertNonNegative(where, 'hertz', hertz);
+  check.assertNonNegative(where, 'hertz', hertz);
   const zeta = options.dampingRatio ?? 0;
-  assertNonNegative(where, 'dampingRatio', zeta);
+  check.assertNonNegative(where, 'dampingRatio', zeta);
   const [minLength, maxLength] = lengthLimits(where, length, hertz > 0, options.minLength, options.maxLength);
   return { pa, pb, length, minLength, maxLength, hertz, zeta };
 }
@@ -164,9 +157,9 @@ export function checkDistance<P extends [number, number] | [number, number, numb
 export function lengthLimits(where: string, length: number, spring: boolean, minLength: unknown, maxLength: unknown): [number, number] {
   const minL = minLength ?? (spring ? 0 : length),
     maxL = maxLength ?? (spring ? Infinity : length);
-  assertNonNegative(where, 'minLength', minL);
-  if (!(minL <= length)) throw new RangeError(`${where}: minLength must be <= length (${length}), got ${describe(minL)}`);
+  check.assertNonNegative(where, 'minLength', minL);
+  if (!(minL <= length)) throw new RangeError(`${where}: minLength must be <= length (${length}), got ${check.describe(minL)}`);
   if (typeof maxL !== 'number' || Number.isNaN(maxL) || !(maxL >= length))
-    throw new RangeError(`${where}: maxLength must be >= length (${length}), got ${describe(maxL)}`);
+    throw new RangeError(`${where}: maxLength must be >= length (${length}), got ${check.describe(maxL)}`);
   return [minL, maxL];
 }

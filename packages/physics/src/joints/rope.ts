@@ -1,14 +1,6 @@
 import { addBodyAs, removeBody } from '../bodies/api.js';
 import { installBalls } from '../collision/install-balls.js';
-import {
-  assertInteger,
-  assertNonNegative,
-  assertOptionalBoolean,
-  assertOptions,
-  assertPositive,
-  assertVector,
-  describe,
-} from '../validation/validate.js';
+import * as check from '../validation/validate.js';
 import { isAlive } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { addDistanceJoint } from './distance-joint.js';
@@ -63,27 +55,27 @@ export interface Rope {
 export function createRope(world: PhysicsWorld, options: RopeOptions): Rope {
   const where = 'createRope';
   if (world.dimensions !== 2) throw new RangeError(`${where}: ropes need a 2D world, this world has ${world.dimensions} dimensions`);
-  assertOptions(where, options, ['start', 'end', 'segments', 'mass', 'radius', 'pinStart', 'pinEnd', 'slack', 'drag', 'breakForce']);
-  assertVector(where, 'start', options.start, 2);
-  assertVector(where, 'end', options.end, 2);
+  check.assertOptions(where, options, ['start', 'end', 'segments', 'mass', 'radius', 'pinStart', 'pinEnd', 'slack', 'drag', 'breakForce']);
+  check.assertVector(where, 'start', options.start, 2);
+  check.assertVector(where, 'end', options.end, 2);
   const n = options.segments ?? 20;
-  assertInteger(where, 'segments', n, 1, 10000);
+  check.assertInteger(where, 'segments', n, 1, 10000);
   const mass = options.mass ?? 1;
-  assertPositive(where, 'mass', mass);
+  check.assertPositive(where, 'mass', mass);
   const radius = options.radius ?? 0;
-  assertNonNegative(where, 'radius', radius);
+  check.assertNonNegative(where, 'radius', radius);
   const drag = options.drag ?? 0;
-  assertNonNegative(where, 'drag', drag);
-  if (options.breakForce !== undefined && options.breakForce !== Infinity) assertPositive(where, 'breakForce', options.breakForce);
+  check.assertNonNegative(where, 'drag', drag);
+  if (options.breakForce !== undefined && options.breakForce !== Infinity) check.assertPositive(where, 'breakForce', options.breakForce);
   const x0 = options.start[0]!,
     y0 = options.start[1]!,
     x1 = options.end[0]!,
     y1 = options.end[1]!;
   const length = Math.hypot(x1 - x0, y1 - y0);
-  if (!(length > 0)) throw new RangeError(`${where}: start and end must differ, got ${describe(options.start)} twice`);
-  assertOptionalBoolean(where, 'pinStart', options.pinStart);
-  assertOptionalBoolean(where, 'pinEnd', options.pinEnd);
-  assertOptionalBoolean(where, 'slack', options.slack);
+  if (!(length > 0)) throw new RangeError(`${where}: start and end must differ, got ${check.describe(options.start)} twice`);
+  check.assertOptionalBoolean(where, 'pinStart', options.pinStart);
+  check.assertOptionalBoolean(where, 'pinEnd', options.pinEnd);
+  check.assertOptionalBoolean(where, 'slack', options.slack);
   const pinStart = options.pinStart ?? true,
     pinEnd = options.pinEnd ?? false;
   const slack = options.slack ?? true;

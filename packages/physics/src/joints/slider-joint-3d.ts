@@ -1,17 +1,6 @@
 import type { PhysicsWorld } from '../world/options.js';
 import { type AxisJoint3DKind, addAxisJoint3D, type Joint3DBaseOptions } from './joint-3d.js';
-import {
-  axisLimit3D,
-  axisMotor3D,
-  C3,
-  errorRotation,
-  type JointPass3D,
-  type JointRows3D,
-  preparePointBlock,
-  sliderAnchor,
-  solveAngularLock,
-  warmStartAxis3D,
-} from './rows-3d.js';
+import * as R3 from './rows-3d.js';
 import { applyLinear, bx, K, linearK, qa, restrictToPlane, rot, solve3, v3, x3 } from './rows-3d-math.js';
 import { Joint3DFlag, type Joint3DStore, Joint3DType } from './store-3d.js';
 
@@ -57,16 +46,16 @@ export function addSliderJoint3D(world: PhysicsWorld, options: SliderJoint3DOpti
  * A slider's point block restricted to the plane across A's axis, then along the axis (at the point
  * of A under B's anchor) its motor and translation limit.
  */
-function solveSliderAxis(p: JointPass3D, j: number, a: number, b: number, flags: number): void {
+function solveSliderAxis(p: R3.JointPass3D, j: number, a: number, b: number, flags: number): void {
   const { s, sb, T, bRate, ms, is } = p;
   // Only the part perpendicular to the axis (A's, in the world) is held.
   rot(qa, s.uax[j]!, s.uay[j]!, s.uaz[j]!, bx);
   const hx = bx[0]!,
     hy = bx[1]!,
     hz = bx[2]!;
-  const Cx = C3[0]!,
-    Cy = C3[1]!,
-    Cz = C3[2]!;
+  const Cx = R3.C3[0]!,
+    Cy = R3.C3[1]!,
+    Cz = R3.C3[2]!;
   const t = Cx * hx + Cy * hy + Cz * hz,
     dv = v3[0]! * hx + v3[1]! * hy + v3[2]! * hz;
   restrictToPlane(hx, hy, hz);
@@ -90,18 +79,18 @@ function solveSliderAxis(p: JointPass3D, j: number, a: number, b: number, flags:
   applyLinear(sb, T, a, b, px, py, pz);
   if (flags & (Joint3DFlag.Limit | Joint3DFlag.Motor)) {
     // Axial rows act at the point of A under B's anchor.
-    sliderAnchor();
+    R3.sliderAnchor();
     const k = linearK(sb, T, a, b, hx, hy, hz);
-    if (k > 0 && flags & Joint3DFlag.Motor) axisMotor3D(p, j, a, b, true, k);
-    if (k > 0 && flags & Joint3DFlag.Limit) axisLimit3D(p, j, a, b, true, k, t);
+    if (k > 0 && flags & Joint3DFlag.Motor) R3.axisMotor3D(p, j, a, b, true, k);
+    if (k > 0 && flags & Joint3DFlag.Limit) R3.axisLimit3D(p, j, a, b, true, k, t);
   }
 }
 
 /** A slider: the three angular rows, the point block across its axis, then its motor and limit along it. */
-export function solveSliderRow3D(p: JointPass3D, j: number, a: number, b: number, flags: number): void {
-  errorRotation(p, j);
-  solveAngularLock(p, j, a, b, false);
-  preparePointBlock(p, a, b);
+export function solveSliderRow3D(p: R3.JointPass3D, j: number, a: number, b: number, flags: number): void {
+  R3.errorRotation(p, j);
+  R3.solveAngularLock(p, j, a, b, false);
+  R3.preparePointBlock(p, a, b);
   solveSliderAxis(p, j, a, b, flags);
 }
 
@@ -109,8 +98,8 @@ export function solveSliderRow3D(p: JointPass3D, j: number, a: number, b: number
  * A slider's warm start: its point and angular-lock impulses, then its limit's and motor's along its
  * axis (turned with A), at the point of A under B's anchor.
  */
-export function warmStartSliderRow3D(p: JointPass3D, j: number, a: number, b: number): void {
-  warmStartAxis3D(p, j, a, b, true);
+export function warmStartSliderRow3D(p: R3.JointPass3D, j: number, a: number, b: number): void {
+  R3.warmStartAxis3D(p, j, a, b, true);
 }
 
 /**
@@ -123,7 +112,7 @@ export function sliderReading3D(s: Joint3DStore, j: number, hs: number, out: Flo
 }
 
 /** The 3D slider joint's rows (rows-3d.ts JointRows3D). */
-export const SLIDER_ROWS_3D: JointRows3D = { warmStart: warmStartSliderRow3D, solve: solveSliderRow3D, reading: sliderReading3D };
+export const SLIDER_ROWS_3D: R3.JointRows3D = { warmStart: warmStartSliderRow3D, solve: solveSliderRow3D, reading: sliderReading3D };
 
 /** What sets the slider apart from the other 3D joint along an axis (joint-3d.ts addAxisJoint3D). */
 const SLIDER: AxisJoint3DKind = { where: 'addSliderJoint3D', type: Joint3DType.Slider, rows: SLIDER_ROWS_3D, maxName: 'maxMotorForce' };

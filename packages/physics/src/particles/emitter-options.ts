@@ -1,17 +1,5 @@
 import { installBalls } from '../collision/install-balls.js';
-import {
-  assertFinite,
-  assertInRange,
-  assertInteger,
-  assertNonNegative,
-  assertOneOf,
-  assertOptionalBoolean,
-  assertOptions,
-  assertPositive,
-  assertVector,
-  describe,
-  unitVector,
-} from '../validation/validate.js';
+import * as check from '../validation/validate.js';
 import { resolveKind } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 
@@ -152,12 +140,12 @@ export function maxSpawnsPerStep(world: PhysicsWorld): number {
 function range(where: string, name: string, v: number | [number, number], positive: boolean): [number, number] {
   const pair: [number, number] = typeof v === 'number' ? [v, v] : v;
   if (!Array.isArray(pair) || pair.length !== 2)
-    throw new TypeError(`${where}: ${name} must be a number or [min, max], got ${describe(v)}`);
+    throw new TypeError(`${where}: ${name} must be a number or [min, max], got ${check.describe(v)}`);
   for (let i = 0; i < 2; i++) {
-    if (positive) assertPositive(where, `${name}[${i}]`, pair[i]);
-    else assertNonNegative(where, `${name}[${i}]`, pair[i]);
+    if (positive) check.assertPositive(where, `${name}[${i}]`, pair[i]);
+    else check.assertNonNegative(where, `${name}[${i}]`, pair[i]);
   }
-  if (!(pair[1] >= pair[0])) throw new RangeError(`${where}: ${name} must be [min, max] with max >= min, got ${describe(v)}`);
+  if (!(pair[1] >= pair[0])) throw new RangeError(`${where}: ${name} must be [min, max] with max >= min, got ${check.describe(v)}`);
   return [pair[0], pair[1]];
 }
 
@@ -221,29 +209,29 @@ export function checkSettings(
   const d = world.dimensions;
   const out: CheckedSettings = {};
   if (options.rate !== undefined) {
-    assertInRange(where, 'rate', options.rate, 0, MAX_EMITTER_RATE);
+    check.assertInRange(where, 'rate', options.rate, 0, MAX_EMITTER_RATE);
     out.rate = options.rate;
   }
   if (options.shape !== undefined) {
-    assertOneOf(where, 'shape', options.shape, SHAPE_NAMES);
+    check.assertOneOf(where, 'shape', options.shape, SHAPE_NAMES);
     out.shape = SHAPES[options.shape];
   }
   if (options.size !== undefined) {
     if (typeof options.size === 'number') {
-      assertNonNegative(where, 'size', options.size);
+      check.assertNonNegative(where, 'size', options.size);
       out.size = [options.size, options.size, options.size];
     } else {
-      assertVector(where, 'size', options.size, d);
-      for (let i = 0; i < d; i++) assertNonNegative(where, `size[${i}]`, options.size[i]);
+      check.assertVector(where, 'size', options.size, d);
+      for (let i = 0; i < d; i++) check.assertNonNegative(where, `size[${i}]`, options.size[i]);
       out.size = [options.size[0]!, options.size[1]!, d === 3 ? options.size[2]! : 0];
     }
   }
-  if (options.direction !== undefined) out.dir = unitVector(where, 'direction', options.direction, d);
+  if (options.direction !== undefined) out.dir = check.unitVector(where, 'direction', options.direction, d);
   if (options.spread !== undefined) {
-    assertInRange(where, 'spread', options.spread, 0, Math.PI);
+    check.assertInRange(where, 'spread', options.spread, 0, Math.PI);
     out.spread = options.spread;
   }
-  assertOptionalBoolean(where, 'projectSphere', options.projectSphere);
+  check.assertOptionalBoolean(where, 'projectSphere', options.projectSphere);
   if (options.projectSphere !== undefined) {
     if (options.projectSphere && d === 3)
       throw new RangeError(
@@ -254,35 +242,36 @@ export function checkSettings(
   if (options.speed !== undefined) out.speed = range(where, 'speed', options.speed, false);
   if (options.lifetime !== undefined) out.life = range(where, 'lifetime', options.lifetime, true);
   if (options.inheritVelocity !== undefined) {
-    assertInRange(where, 'inheritVelocity', options.inheritVelocity, 0, 1);
+    check.assertInRange(where, 'inheritVelocity', options.inheritVelocity, 0, 1);
     out.inherit = options.inheritVelocity;
   }
   if (options.policy !== undefined) {
-    assertOneOf(where, 'policy', options.policy, ['drop-new', 'recycle-oldest']);
+    check.assertOneOf(where, 'policy', options.policy, ['drop-new', 'recycle-oldest']);
     out.policy = options.policy === 'recycle-oldest' ? CapacityPolicy.RecycleOldest : CapacityPolicy.DropNew;
   }
-  assertOptionalBoolean(where, 'enabled', options.enabled);
+  check.assertOptionalBoolean(where, 'enabled', options.enabled);
   if (options.enabled !== undefined) out.enabled = options.enabled;
   const p = options.particle;
   if (p !== undefined) {
-    assertOptions(where, p, PARTICLE_OPTIONS, 'particle');
-    if (p.mass !== undefined) assertPositive(where, 'particle.mass', p.mass);
-    if (p.linearDrag !== undefined) assertNonNegative(where, 'particle.linearDrag', p.linearDrag);
-    if (p.quadraticDrag !== undefined) assertNonNegative(where, 'particle.quadraticDrag', p.quadraticDrag);
-    if (p.gravityScale !== undefined) assertFinite(where, 'particle.gravityScale', p.gravityScale);
-    if (p.radius !== undefined) assertPositive(where, 'particle.radius', p.radius);
-    for (const k of ['colorStart', 'colorEnd'] as const) if (p[k] !== undefined) assertInteger(where, `particle.${k}`, p[k], 0, 0xffffff);
-    for (const k of ['sizeStart', 'sizeEnd'] as const) if (p[k] !== undefined) assertNonNegative(where, `particle.${k}`, p[k]);
-    for (const k of ['alphaStart', 'alphaEnd'] as const) if (p[k] !== undefined) assertInRange(where, `particle.${k}`, p[k], 0, 1);
+    check.assertOptions(where, p, PARTICLE_OPTIONS, 'particle');
+    if (p.mass !== undefined) check.assertPositive(where, 'particle.mass', p.mass);
+    if (p.linearDrag !== undefined) check.assertNonNegative(where, 'particle.linearDrag', p.linearDrag);
+    if (p.quadraticDrag !== undefined) check.assertNonNegative(where, 'particle.quadraticDrag', p.quadraticDrag);
+    if (p.gravityScale !== undefined) check.assertFinite(where, 'particle.gravityScale', p.gravityScale);
+    if (p.radius !== undefined) check.assertPositive(where, 'particle.radius', p.radius);
+    for (const k of ['colorStart', 'colorEnd'] as const)
+      if (p[k] !== undefined) check.assertInteger(where, `particle.${k}`, p[k], 0, 0xffffff);
+    for (const k of ['sizeStart', 'sizeEnd'] as const) if (p[k] !== undefined) check.assertNonNegative(where, `particle.${k}`, p[k]);
+    for (const k of ['alphaStart', 'alphaEnd'] as const) if (p[k] !== undefined) check.assertInRange(where, `particle.${k}`, p[k], 0, 1);
     out.particle = p;
   }
   if (options.onDeath !== undefined) {
     const od = options.onDeath;
-    assertOptions(where, od, ['emitter', 'count', 'maxGeneration'], 'onDeath');
+    check.assertOptions(where, od, ['emitter', 'count', 'maxGeneration'], 'onDeath');
     // 0 (setEmitter only) clears the death emitter.
     const slot = od.emitter === 0 && where === 'setEmitter' ? 0 : resolveKind(world, od.emitter, 'emitter', where, 'onDeath.emitter');
-    assertInteger(where, 'onDeath.count', od.count, 0, 1_000_000);
-    assertInteger(where, 'onDeath.maxGeneration', od.maxGeneration, 0, 1000);
+    check.assertInteger(where, 'onDeath.count', od.count, 0, 1_000_000);
+    check.assertInteger(where, 'onDeath.maxGeneration', od.maxGeneration, 0, 1000);
     out.onDeath = { slot, count: od.count, maxGeneration: od.maxGeneration };
   }
   return out;

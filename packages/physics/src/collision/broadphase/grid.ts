@@ -233,15 +233,9 @@ function classifyBalls(world: PhysicsWorld, balls: ArrayLike<number>): number {
     invInertia = cs.invInertia,
     margin = cs.margin,
     type = cs.bodyType;
-  const px = c.Position.x,
-    py = c.Position.y,
-    pz = c.Position.z;
-  const ox = c.PreviousPosition.x,
-    oy = c.PreviousPosition.y,
-    oz = c.PreviousPosition.z;
-  const vx = c.Velocity.x,
-    vy = c.Velocity.y,
-    vz = c.Velocity.z;
+  const { x: px, y: py, z: pz } = c.Position;
+  const { x: ox, y: oy, z: oz } = c.PreviousPosition;
+  const { x: vx, y: vy, z: vz } = c.Velocity;
   const radius = c.Ball.radius;
   const mInv = c.Mass.inv;
   const halfSpec = 0.5 * cs.settings.speculativeDistance;
@@ -296,9 +290,7 @@ function layoutGrid(world: PhysicsWorld, balls: ArrayLike<number>, limit: number
   const is3D = world.dimensions === 3;
   const margin = cs.margin,
     radius = world.components.Ball.radius;
-  const ox = world.components.PreviousPosition.x,
-    oy = world.components.PreviousPosition.y,
-    oz = world.components.PreviousPosition.z;
+  const { x: ox, y: oy, z: oz } = world.components.PreviousPosition;
   // The ordinary bodies' extent too (NaN positions are counted in cell 0, as cellOf puts them).
   let maxReach = 0;
   let maxReachAll = 0;
@@ -381,9 +373,7 @@ function sortIntoBuckets(world: PhysicsWorld, balls: ArrayLike<number>, limit: n
   const is3D = world.dimensions === 3;
   const margin = cs.margin,
     radius = world.components.Ball.radius;
-  const ox = world.components.PreviousPosition.x,
-    oy = world.components.PreviousPosition.y,
-    oz = world.components.PreviousPosition.z;
+  const { x: ox, y: oy, z: oz } = world.components.PreviousPosition;
   const invCell = 1 / g.cellSize,
     table = g.tableSize,
     dense = g.spanX !== 0;
@@ -444,9 +434,7 @@ function oversizedPairs(world: PhysicsWorld, small: number): void {
   const type = cs.bodyType,
     margin = cs.margin,
     radius = world.components.Ball.radius;
-  const ox = world.components.PreviousPosition.x,
-    oy = world.components.PreviousPosition.y,
-    oz = world.components.PreviousPosition.z;
+  const { x: ox, y: oy, z: oz } = world.components.PreviousPosition;
   for (let i = 0; i < overCount; i++) {
     const e = over[i]!;
     const x = ox[e]!,

@@ -174,12 +174,8 @@ function segmentContact(world: PhysicsWorld, buf: ContactBuffer, s: number, b: n
   const c = world.components;
   const h = world.h;
   const spec = world.collision.settings.speculativeDistance;
-  const ox = c.PreviousPosition.x,
-    oy = c.PreviousPosition.y,
-    oz = c.PreviousPosition.z;
-  const vx = c.Velocity.x,
-    vy = c.Velocity.y,
-    vz = c.Velocity.z;
+  const { x: ox, y: oy, z: oz } = c.PreviousPosition;
+  const { x: vx, y: vy, z: vz } = c.Velocity;
   const radius = c.Ball.radius;
   const S = c.Segment;
   const W = rowArgs,
@@ -259,12 +255,8 @@ function boundaryContacts(world: PhysicsWorld, buf: ContactBuffer): void {
   const cs = world.collision;
   const h = world.h;
   const spec0 = cs.settings.speculativeDistance;
-  const ox = c.PreviousPosition.x,
-    oy = c.PreviousPosition.y,
-    oz = c.PreviousPosition.z;
-  const vx = c.Velocity.x,
-    vy = c.Velocity.y,
-    vz = c.Velocity.z;
+  const { x: ox, y: oy, z: oz } = c.PreviousPosition;
+  const { x: vx, y: vy, z: vz } = c.Velocity;
   const radius = c.Ball.radius;
   const type = cs.bodyType;
   // A 2D world's z stores hold 0 (bodies/api.ts writes them so; nothing integrates them): not read.
@@ -283,47 +275,29 @@ function boundaryContacts(world: PhysicsWorld, buf: ContactBuffer): void {
     if (type[b] >= BodyType.Static) continue;
     const r = radius[b]!;
     const spec = spec0 < 0.5 * r ? spec0 : 0.5 * r;
-    const x = ox[b]!,
-      y = oy[b]!;
-    const sx = vx[b]!,
-      sy = vy[b]!;
     // Faces 0 to 3 (5 in 3D): the min and max face of x, y (and z), in that order. The row's radius
-    // and separation go through rowArgs, not as arguments (see rowArgs).
+    // goes through rowArgs, not as an argument (see rowArgs).
     W[5] = r;
-    let sep = x - r - minX;
-    if (sep < (sx < 0 ? -sx * h : 0) + spec) {
-      W[3] = sep;
-      faceContact(buf, b, 0);
-    }
-    sep = maxX - x - r;
-    if (sep < (sx > 0 ? sx * h : 0) + spec) {
-      W[3] = sep;
-      faceContact(buf, b, 1);
-    }
-    sep = y - r - minY;
-    if (sep < (sy < 0 ? -sy * h : 0) + spec) {
-      W[3] = sep;
-      faceContact(buf, b, 2);
-    }
-    sep = maxY - y - r;
-    if (sep < (sy > 0 ? sy * h : 0) + spec) {
-      W[3] = sep;
-      faceContact(buf, b, 3);
-    }
-    if (is3D) {
-      const z = oz[b]!,
-        sz = vz[b]!;
-      sep = z - r - minZ;
-      if (sep < (sz < 0 ? -sz * h : 0) + spec) {
-        W[3] = sep;
-        faceContact(buf, b, 4);
-      }
-      sep = maxZ - z - r;
-      if (sep < (sz > 0 ? sz * h : 0) + spec) {
-        W[3] = sep;
-        faceContact(buf, b, 5);
-      }
-    }
+    axisFaces(buf, b, 0, ox[b]! - r - minX, maxX - ox[b]! - r, vx[b]! * h, spec);
+    axisFaces(buf, b, 2, oy[b]! - r - minY, maxY - oy[b]! - r, vy[b]! * h, spec);
+    if (is3D) axisFaces(buf, b, 4, oz[b]! - r - minZ, maxZ - oz[b]! - r, vz[b]! * h, spec);
+  }
+}
+
+/**
+ * The contacts of ball `b` with the min face `face` and the max face `face + 1` of one axis of the
+ * boundary box, if it comes within `spec` (m) of either this step: `sepMin` and `sepMax` its
+ * separations from them at the start of the step (m), `move` its displacement along the axis this
+ * step (m). Its radius is already in rowArgs[5].
+ */
+function axisFaces(buf: ContactBuffer, b: number, face: number, sepMin: number, sepMax: number, move: number, spec: number): void {
+  if (sepMin < (move < 0 ? -move : 0) + spec) {
+    rowArgs[3] = sepMin;
+    faceContact(buf, b, face);
+  }
+  if (sepMax < (move > 0 ? move : 0) + spec) {
+    rowArgs[3] = sepMax;
+    faceContact(buf, b, face + 1);
   }
 }
 
@@ -350,12 +324,8 @@ function planeContacts(world: PhysicsWorld, buf: ContactBuffer): void {
   if (planes.length === 0) return;
   const h = world.h;
   const spec = cs.settings.speculativeDistance;
-  const ox = c.PreviousPosition.x,
-    oy = c.PreviousPosition.y,
-    oz = c.PreviousPosition.z;
-  const vx = c.Velocity.x,
-    vy = c.Velocity.y,
-    vz = c.Velocity.z;
+  const { x: ox, y: oy, z: oz } = c.PreviousPosition;
+  const { x: vx, y: vy, z: vz } = c.Velocity;
   const radius = c.Ball.radius;
   const type = cs.bodyType;
   const W = rowArgs;
@@ -394,9 +364,7 @@ function planeContacts(world: PhysicsWorld, buf: ContactBuffer): void {
  */
 export function currentSeparation(world: PhysicsWorld, buf: ContactBuffer, i: number): number {
   const c = world.components;
-  const px = c.Position.x,
-    py = c.Position.y,
-    pz = c.Position.z;
+  const { x: px, y: py, z: pz } = c.Position;
   const radius = c.Ball.radius;
   const kind = buf.kind[i]!,
     b = buf.b[i]!,
