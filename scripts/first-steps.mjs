@@ -27,7 +27,13 @@
 // per tree), --seed (default 1), --show a-b (the steps printed one by one, default 0-<steps>),
 // --deopts, --flags "<Node or V8 flags for every run>" (an experiment: --flags=--no-lazy-feedback-allocation; the = is needed).
 // --warm-up (call warmUp(d) of the scene's dimension before making the world, as a program may during
-// its loading; the steps then show what is left after it, and a last line the warm-up's own times). Exit code 2 on a usage error. Linux only (the main thread's CPU time).
+// its loading; the steps then show what is left after it, and a last line the warm-up's own times).
+// --compiles (after the timed runs, per tree: what V8's optimising compiler, TurboFan, compiled in
+// the steps, and how much: two more runs with its compiles made on the main thread, one of the steps
+// and one stopped before them, and the difference of TurboFan's zone memory (--turbo-stats), a measure
+// of its work that does not depend on the machine's load; then the functions compiled in each step,
+// '(osr)' for a loop's on-stack replacement. On a loaded machine a change to how much the first steps
+// compile shows in this figure long before it shows in their CPU times). Exit code 2 on a usage error. Linux only (the main thread's CPU time).
 
 import { execFileSync } from 'node:child_process';
 import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
@@ -39,7 +45,7 @@ import { checkOut, removeCheckout, scriptCli } from './script-cli.mjs';
 
 const { values, positionals, usage, integer } = scriptCli(
   'first-steps',
-  'node scripts/first-steps.mjs [rev] [--scene pyramid] [--count n] [--steps 8] [--runs 7] [--seed 1] [--show a-b] [--deopts] [--flags="--v8-flag ..."] [--warm-up]',
+  'node scripts/first-steps.mjs [rev] [--scene pyramid] [--count n] [--steps 8] [--runs 7] [--seed 1] [--show a-b] [--deopts] [--flags="--v8-flag ..."] [--warm-up] [--compiles]',
   {
     scene: { type: 'string', default: 'pyramid' },
     count: { type: 'string' },
@@ -50,6 +56,7 @@ const { values, positionals, usage, integer } = scriptCli(
     deopts: { type: 'boolean', default: false },
     flags: { type: 'string', default: '' },
     'warm-up': { type: 'boolean', default: false },
+    compiles: { type: 'boolean', default: false },
   },
 );
 if (positionals.length > 1) usage('give at most one git revision');
@@ -106,6 +113,46 @@ function deoptSite(t, positions) {
   const code = t.lines[line - 1] ?? '',
     i = column - 1; // V8's columns count from 1
   return `${at.map((x) => x.join(':')).join(' < ')}: ${code.slice(Math.max(0, i - 30), i).trimStart()} >>${code.slice(i, i + 30).trimEnd()}`;
+}
+
+/**
+ * One run of tree `t`'s child over `n` steps with TurboFan's compiles on the main thread (so that
+ * which functions it compiles, and when, does not depend on the load), traced: returns TurboFan's
+ * zone memory over the whole run (bytes, --turbo-stats) and the functions compiled in each step.
+ */
+function compileRun(t, n) {
+  const out = execFileSync(
+    process.execPath,
+    [
+      ...nodeFlags,
+      '--trace-opt',
+      '--turbo-stats',
+      '--no-concurrent-recompilation',
+      '--no-concurrent-osr',
+      child,
+      JSON.stringify([t.bundle, values.scene, count ?? null, n, seed, values['warm-up']]),
+    ],
+    { encoding: 'utf8', maxBuffer: 1 << 28 },
+  );
+  const zone = Number(/^\s*totals\s+[\d.]+\s+\(\s*[\d.]+%\)\s+(\d+)/m.exec(out)?.[1] ?? 0);
+  const perStep = new Map();
+  let at = -1;
+  for (const line of out.split('\n')) {
+    const m = /^=== (?:step (\d+)|hash)/.exec(line);
+    if (m) at = m[1] === undefined ? -1 : Number(m[1]);
+    const c = /completed compiling .*?<JSFunction ([^ >]*).*?\(target TURBOFAN\)( OSR)?/.exec(line);
+    if (c && at >= 0) perStep.set(at, [...(perStep.get(at) ?? []), c[1] + (c[2] ? ' (osr)' : '')]);
+  }
+  return { zone, perStep };
+}
+
+/** --compiles: TurboFan's zone memory in tree `t`'s steps (a run of them less one stopped before them) and what it compiled in each. */
+function printCompiles(t) {
+  const all = compileRun(t, steps),
+    none = compileRun(t, 0);
+  const mb = (all.zone - none.zone) / 1e6;
+  console.log(`  compiles, ${t.name}: TurboFan zone memory in steps 0-${steps - 1}: ${mb.toFixed(1)} MB`);
+  for (const [i, list] of all.perStep) console.log(`    step ${i}: ${list.join(', ')}`);
 }
 
 const temp = mkdtempSync(join(tmpdir(), 'bitphysics-first-steps-'));
@@ -210,6 +257,7 @@ try {
       if (list.length === 0) console.log('    none');
       for (const [k, n] of list) console.log(`    ${n} ${k}`);
     }
+  if (values.compiles) for (const t of trees) printCompiles(t);
 } finally {
   if (base !== null) removeCheckout(base);
   rmSync(temp, { recursive: true, force: true });

@@ -44,8 +44,7 @@ export function findPairs(sc: ShapeScratch, anyMoving: boolean): void {
   const inv = 1 / cell;
   let table = 16;
   while (table < 2 * n) table *= 2;
-  if (sc.bucketStart.length < table + 1) sc.bucketStart = new Int32Array(table + 1);
-  const start = sc.bucketStart,
+  const start = sc.bucketStart.length < table + 1 ? growBuckets(sc, table + 1) : sc.bucketStart,
     mask = table - 1;
   start.fill(0, 0, table + 1);
   const cellX = sc.cellX,
@@ -144,15 +143,29 @@ export function findPairs(sc: ShapeScratch, anyMoving: boolean): void {
 
 function pushPair(sc: ShapeScratch, i: number, j: number): void {
   const k = sc.pairCount;
-  if (k >= sc.pairI.length) {
-    const a = new Int32Array(k * 2),
-      b = new Int32Array(k * 2);
-    a.set(sc.pairI);
-    b.set(sc.pairJ);
-    sc.pairI = a;
-    sc.pairJ = b;
-  }
+  if (k >= sc.pairI.length) growPairs(sc, k * 2);
   sc.pairI[k] = i;
   sc.pairJ[k] = j;
   sc.pairCount = k + 1;
+}
+
+/** A new sc.bucketStart of `size` entries, returned (out of line from findPairs, as growPairs). */
+function growBuckets(sc: ShapeScratch, size: number): Int32Array {
+  sc.bucketStart = new Int32Array(size);
+  return sc.bucketStart;
+}
+
+/**
+ * Grows sc.pairI/sc.pairJ to `size` pairs, keeping the pairs found so far. A function of its own,
+ * not in pushPair: findPairs inlines pushPair at each of its call sites, and an allocation and copy
+ * of typed arrays inlined there made findPairs several times costlier for V8 to compile (in a scene's
+ * first steps, on the threads the step shares the machine with).
+ */
+function growPairs(sc: ShapeScratch, size: number): void {
+  const a = new Int32Array(size),
+    b = new Int32Array(size);
+  a.set(sc.pairI);
+  b.set(sc.pairJ);
+  sc.pairI = a;
+  sc.pairJ = b;
 }
