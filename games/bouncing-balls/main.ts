@@ -216,12 +216,13 @@ let hoopMovedAt = Number.NEGATIVE_INFINITY;
  * The balls in flight after a throw: whether each may still score (released below the rim, not up
  * through the net), its centre after the last step, m, what it is worth (BALL_POINTS), the world
  * time it was thrown, s, and what it has touched since (markTouches): anything (`touched`: no swish)
- * and a wall of the box or a ramp (`trick`), and its centre's highest point, m (`top`: missWords). A
- * ball that has not gone in MISS_SECONDS after its throw is a miss and leaves.
+ * and a wall of the box or a ramp (`trick`), its centre's highest point, m (`top`: missWords), and
+ * whether it went up through the net (`up`). A ball that has not gone in MISS_SECONDS after its throw
+ * is a miss and leaves.
  */
 let flights = new Map<
   number,
-  { scores: boolean; x: number; y: number; top: number; kind: BallKind; at: number; touched: boolean; trick: boolean }
+  { scores: boolean; up: boolean; x: number; y: number; top: number; kind: BallKind; at: number; touched: boolean; trick: boolean }
 >();
 /** The player's basketballs (made by a throw or a click from empty space): drawn orange with seams. */
 let basketballs = new Set<number>();
@@ -275,7 +276,7 @@ let lastBasket: {
 let missAt = -1e9;
 /** How long the status row says a miss, s of game time. */
 const MISS_SHOWN = 2.5;
-/** What the status row says of the last miss (hoop.ts missWords). */
+/** What the status row says of the last miss (hoop.ts missWords), or of a flick too slow to throw (release). */
 let missSaid = 'Missed';
 
 /** Builds a fresh world with the scene from the current params (the shell calls it at start and on R). */
@@ -732,6 +733,7 @@ function playHoop(world: PhysicsWorld): void {
     if (crossing === 1 && b.scores) {
       // Up through the hoop from below: no basket when it comes back down.
       b.scores = false;
+      b.up = true;
       if (basketballs.has(e)) renderer.setColor(e, HIGH_COLOR);
       if (e === lastThrown) ruleHint = 'below';
     }
@@ -773,7 +775,8 @@ function playHoop(world: PhysicsWorld): void {
     const out = world.time - b.at;
     if (falling || out > MISS_SECONDS_OVER_HOOP || (out > MISS_SECONDS && !overHoop)) {
       flights.delete(e);
-      if (b.scores && round.phase !== 'over') {
+      if (round.phase === 'over') continue;
+      if (b.scores) {
         const broke = roundMiss(round);
         // Every miss is said, with why (a throw off the ceiling back onto the heap looked like none).
         missAt = playSeconds;
@@ -784,6 +787,10 @@ function playHoop(world: PhysicsWorld): void {
           setTimeout(() => sound.chime(220, 0.35), 110);
         }
       }
+      // Said on the court too, where the ball is (the status row is far from a thumb's throw).
+      // Short enough for a phone's court: the streak is in the status row.
+      const ceiling = layoutOf(TALL).box.max[1] - world.components.Ball.radius[slotOf(e)]!;
+      sayOnCourt(b.scores ? missWords(false, b.top, ceiling, spots[hoopAt]!) : b.up ? 'Up through the net' : 'Too high to score', x, y);
     }
   }
   // The hoop stays for BASKETS_PER_HOOP baskets (hoop.ts roundBasket), then moves, once no thrown
@@ -1690,6 +1697,7 @@ canvas.addEventListener('pointerdown', (event) => {
   boardSaid = false;
   slop = event.pointerType === 'touch' ? TOUCH_SLOP : CLICK_SLOP;
   pressFinger = event.pointerType === 'touch';
+  followed = pulledMost = 0;
   fullPullNow = pressFinger ? fingerFullPull() : fullPull();
   holdStart = performance.now();
   flick.press(px, py, event.timeStamp);
@@ -1751,7 +1759,11 @@ canvas.addEventListener('pointermove', (event) => {
   // A finger above the pull's anchor would throw down, never a basket: the anchor follows it there,
   // so a finger slid up from a ball into open space pulls back from where it is, with room below and
   // to the side (a ball by the screen's edge or bottom boxed the pull in; FINGER_PULL_SCALE).
-  if (pressFinger && !pressStand && lastY < startY) [startX, startY] = [lastX, lastY];
+  if (lastY >= startY) pulledMost = Math.max(pulledMost, Math.hypot(lastX - startX, lastY - startY));
+  if (pressFinger && !pressStand && lastY < startY) {
+    followed += startY - lastY;
+    [startX, startY] = [lastX, lastY];
+  }
 });
 
 /**
@@ -1773,7 +1785,21 @@ function release(event: PointerEvent, cancelled: boolean): void {
   const ball = pressBall;
   const cancel = inCancelZone();
   pressBall = 0;
-  if (cancel) return;
+  if (cancel) {
+    // A finger slid up (the anchor following it) and let go too slowly for a flick: nothing is
+    // thrown, and the court says so, where the finger pressed.
+    if (
+      pressFinger &&
+      followed > slop &&
+      pulledMost <= cancelRadius() &&
+      !(ball !== 0 && handles.balls.includes(ball) && liftSpot(ball) === null)
+    ) {
+      missSaid = 'Too slow to throw: flick up quicker, or pull back';
+      missAt = playSeconds;
+      sayOnCourt('Flick quicker to throw', pressAt[0], pressAt[1]);
+    }
+    return;
+  }
   // What the label said at this pointer's spot decides (the frame's check), so the outcome agrees with
   // it; a release away from the last drawn spot is checked afresh.
   const saidBlocked = Math.hypot(lastX - shownBlocked.x, lastY - shownBlocked.y) < 3 ? shownBlocked.blocked : blockedAtOnce(t, ball);
@@ -1805,6 +1831,10 @@ function release(event: PointerEvent, cancelled: boolean): void {
     if (last) lastCall.ball = e;
   }
 }
+/** How far the current press's anchor has followed a finger up, CSS px (a finger slid up to flick: release). */
+let followed = 0;
+/** The current press's longest pull back (down), CSS px: a finger that slid up and never pulled back was a flick, not a cancel (release). */
+let pulledMost = 0;
 /** The current press's pointer samples (event times), for the speed of a finger's flick as it lets go. */
 const flick = new FlickTracker();
 
@@ -1912,7 +1942,8 @@ function launch(e: number, thrown: boolean): void {
   const scores = mayScore(hoopSpots(TALL)[hoopAt]!, by);
   if (basketballs.has(e)) renderer.setColor(e, scores ? PLAYER_COLOR : HIGH_COLOR);
   // A drop falls: it cannot go down through the hoop from below the rim, nor be a miss.
-  if (thrown) flights.set(e, { scores, x: bx, y: by, top: by, kind: kindOf(e), at: shell.world.time, touched: false, trick: false });
+  if (thrown)
+    flights.set(e, { scores, up: false, x: bx, y: by, top: by, kind: kindOf(e), at: shell.world.time, touched: false, trick: false });
   else flights.delete(e);
   if (round.phase !== 'over' && thrown) {
     roundShot(round);
@@ -2635,6 +2666,65 @@ praiseText.visible = false;
 const courtMask = new Graphics({ label: 'confetti-mask' });
 confetti.mask = courtMask;
 app.stage.addChild(courtMask, confetti, popText, praiseText);
+/**
+ * The words of a throw's end that was no basket, said on the court (sayOnCourt; drawOutcome): a miss
+ * and why, a throw that could not score, or a flick too slow to throw. Drawn over the ball where it
+ * ended for OUTCOME_SECONDS, rising and fading, inside the court.
+ */
+const outcomeText = new Text({
+  text: 'Missed',
+  style: {
+    fontFamily: 'system-ui, sans-serif',
+    fontSize: 20,
+    fontWeight: '700',
+    fill: 0xffc2b8,
+    stroke: { color: 0x0b0f16, width: 5 },
+    align: 'center',
+    wordWrap: true,
+    wordWrapWidth: 300,
+  },
+});
+outcomeText.anchor.set(0.5, 1);
+outcomeText.visible = false;
+app.stage.addChild(outcomeText);
+/** How long a throw's end is said on the court, s (world time). */
+const OUTCOME_SECONDS = 2;
+/** The last words said on the court: what, where, m, when, world s, and in which world (a new round's says nothing of the last's). */
+let outcome: { words: string; x: number; y: number; time: number; world: PhysicsWorld | null } = {
+  words: '',
+  x: 0,
+  y: 0,
+  time: Number.NEGATIVE_INFINITY,
+  world: null,
+};
+
+/** Says `words` on the court at (x, y), m, from now (drawOutcome). */
+function sayOnCourt(words: string, x: number, y: number): void {
+  outcome = { words, x, y, time: shell.world.time, world: shell.world };
+}
+
+/** The court's words (sayOnCourt), `age` s after they were said: over their spot, rising 20 px and fading over the last half, kept inside the court. */
+function drawOutcome(age: number): void {
+  outcomeText.visible = age >= 0 && age < OUTCOME_SECONDS && outcome.words !== '' && outcome.world === shell.world;
+  if (!outcomeText.visible) return;
+  const cam = renderer.camera,
+    { box } = layoutOf(TALL);
+  const left = cam.toScreenX(box.min[0]),
+    right = cam.toScreenX(box.max[0]);
+  // Wrapped to the court's width (a phone's is some 360 px).
+  const wrap = Math.max(120, right - left - 16);
+  if (outcomeText.style.wordWrapWidth !== wrap) outcomeText.style.wordWrapWidth = wrap;
+  if (outcomeText.text !== outcome.words) outcomeText.text = outcome.words;
+  const f = age / OUTCOME_SECONDS;
+  const half = outcomeText.width / 2 + 4,
+    top = cam.toScreenY(box.max[1]) + outcomeText.height + 4,
+    bottom = cam.toScreenY(box.min[1]) - 4;
+  const x = half * 2 >= right - left ? (left + right) / 2 : Math.min(right - half, Math.max(left + half, cam.toScreenX(outcome.x)));
+  const y = Math.min(bottom, Math.max(top, cam.toScreenY(outcome.y) - 30 - 20 * f));
+  outcomeText.position.set(x, y);
+  outcomeText.alpha = f < 0.5 ? 1 : 2 * (1 - f);
+}
+
 /** How long a basket's celebration lasts, s (world time). */
 const CELEBRATE_SECONDS = 1.6;
 /** What the praise line says for the n-th basket of a round (1-based): the first few differ. */
@@ -2790,6 +2880,7 @@ function drawHoop(): void {
     else hoopLayer.circle(px, pipY, pipR - 0.75).stroke({ width: 1.5, color: 0xf4f6fb, alpha: 0.8 });
   }
   drawCelebration(world.time - lastBasket.time);
+  drawOutcome(world.time - outcome.time);
   updateStatus();
   placeTouchHint();
 }
@@ -3506,6 +3597,8 @@ shell.expose({
   countdown: (): string => (countdownText.visible ? countdownText.text : ''),
   /** Whether a press is under way (pressed and not yet released, cancelled or ended by the round's end). */
   aiming: (): boolean => pointerId !== -1,
+  /** The words said on the court of the last throw that was no basket ('' when none shows; sayOnCourt), e.g. 'Missed: short of the rim'. */
+  courtWords: (): string => (outcomeText.visible ? outcomeText.text : ''),
   /** The label over the press or the carried ball ('' when none shows), e.g. 'release here to cancel'. */
   aimLabel: (): string => (holdLabel.visible ? holdLabel.text : ''),
   /** The full-speed pull of the current (or last) press, CSS px (fullPull, or fingerFullPull for a finger, when it began). */
