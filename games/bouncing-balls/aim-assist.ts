@@ -8,7 +8,7 @@
  * and angle, and a finger at least AIM_ASSIST's px either way (a thumb's jitter). No DOM: the page's
  * currentThrow and the node tests call it.
  */
-import { type HoopSpot, MAX_THROW_SPEED, slingPull } from './hoop';
+import { type HoopSpot, MAX_THROW_SPEED, type SlingRoom, slingPull } from './hoop';
 
 /**
  * How far the assist reaches from a pull to the pull of a throw through the hoop: `share` of the
@@ -31,10 +31,20 @@ const ANGLE_STEP = Math.PI / 720;
 /**
  * The pull length, px, of a drag-free throw from (x, y), m, at `angle` (radians from +x,
  * counter-clockwise; y up) that comes down through (aimX, aimY), m, under gravity `g` m/s^2, when
- * `fullPull` px throws at MAX_THROW_SPEED (hoop.ts slingPull); null when no such throw is there (the
- * point is not ahead of the throw, above its line, or needs more than the top speed).
+ * `fullPull` px throws at MAX_THROW_SPEED (hoop.ts slingPull; at room.top, from room.low, with a
+ * `room`); null when no such throw is there (the point is not ahead of the throw, above its line, or
+ * needs more than the top speed or, with a room, less than its low one).
  */
-export function basketPull(x: number, y: number, angle: number, aimX: number, aimY: number, g: number, fullPull: number): number | null {
+export function basketPull(
+  x: number,
+  y: number,
+  angle: number,
+  aimX: number,
+  aimY: number,
+  g: number,
+  fullPull: number,
+  room?: SlingRoom,
+): number | null {
   const c = Math.cos(angle),
     s = Math.sin(angle);
   const dx = aimX - x,
@@ -44,18 +54,20 @@ export function basketPull(x: number, y: number, angle: number, aimX: number, ai
   const lift = dx * (s / c) - dy;
   if (!(lift > 0)) return null;
   const speed = Math.sqrt((g * dx * dx) / (2 * c * c * lift));
-  if (!(speed > 0 && speed <= MAX_THROW_SPEED)) return null;
+  if (!(speed > (room ? room.low : 0) && speed <= (room ? room.top : MAX_THROW_SPEED))) return null;
   // Coming down there, not still rising.
   if (speed * s - (g * dx) / (speed * c) >= 0) return null;
-  return slingPull(speed, fullPull);
+  return slingPull(speed, fullPull, room);
 }
 
 /** Options of `assistAim`. */
 export interface AimAssistOptions {
   /** Gravity, m/s^2 down (no assist unless > 0). */
   readonly gravity: number;
-  /** The pull, px, that throws at MAX_THROW_SPEED. */
+  /** The pull, px, that throws at MAX_THROW_SPEED (at room.top with a `room`). */
   readonly fullPull: number;
+  /** The tall box's slingshot speeds for this throw (hoop.ts slingRoom); none: the wide box's curve. */
+  readonly room?: SlingRoom;
   /** Whether the pull is a finger's (AIM_ASSIST's least reach in px applies). */
   readonly finger: boolean;
 }
@@ -80,7 +92,7 @@ export function assistAim(
   if (![pullX, pullY, x, y].every(Number.isFinite))
     throw new RangeError(`assistAim: pull and start must be finite, got pull (${pullX}, ${pullY}) from (${x}, ${y})`);
   const length = Math.hypot(pullX, pullY);
-  const { gravity, fullPull, finger } = options;
+  const { gravity, fullPull, finger, room } = options;
   if (length === 0 || !(gravity > 0) || !(fullPull > 0)) return null;
   const reachLength = Math.max(finger ? AIM_ASSIST.fingerLength : 0, AIM_ASSIST.share * length);
   const reachSide = Math.max(finger ? AIM_ASSIST.fingerSide : 0, length * Math.tan((AIM_ASSIST.degrees * Math.PI) / 180));
@@ -91,7 +103,7 @@ export function assistAim(
   for (const off of AIM_POINTS) {
     let near: { d: number; angle: number; length: number } | null = null;
     for (let da = -reachAngle; da <= reachAngle + 1e-12; da += ANGLE_STEP) {
-      const l = basketPull(x, y, angle + da, spot.x + spot.side * off, spot.y, gravity, fullPull);
+      const l = basketPull(x, y, angle + da, spot.x + spot.side * off, spot.y, gravity, fullPull, room);
       if (l === null || l > fullPull) continue;
       const d = ((l - length) / reachLength) ** 2 + ((length * Math.sin(da)) / reachSide) ** 2;
       if (d <= 1 && (near === null || d < near.d)) near = { d, angle: angle + da, length: l };

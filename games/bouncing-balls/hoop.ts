@@ -493,31 +493,79 @@ const KNEE_SPEED = MAX_THROW_SPEED * Math.sqrt(SLING_KNEE / (2 - SLING_KNEE));
 const KNEE_SLOPE = KNEE_SPEED / SLING_KNEE;
 
 /**
+ * The slingshot's speeds in the tall box (a phone held upright), m/s: `low` just past no pull, `top`
+ * at the full pull (slingRoom).
+ */
+export interface SlingRoom {
+  readonly low: number;
+  readonly top: number;
+}
+
+/**
+ * How high over the rim a full pull straight up takes the ball in the tall box, m (slingRoom): room
+ * for a lob to come down into the hoop, under the ramps over it. The box's 20 m/s top speed took
+ * every full pull there to the ceiling or flat into the wall: none of them scored. At 3.5 m a full
+ * pull scores from 51 of the 54 of 80 random starts under the rim that can score at all
+ * (test/games/bouncing-balls-room.test.ts); of another 150, 83 of 85 (3 m: 81, 4 m: 77).
+ */
+export const ROOM_OVER_RIM = 3.5;
+
+/**
+ * How far under the rim a pull just past nothing takes the ball straight up in the tall box, m
+ * (slingRoom): the pull's length is spent on throws that rise to the hoop, the apex of a throw
+ * straight up gaining the same per px of pull from 1 m under the rim to ROOM_OVER_RIM over it (some
+ * 3 cm a px of a finger's 138 px pull). A low start's least power for a clean basket (the share of
+ * the full pull) is then a median 50 % (with the floor at half the top speed, 71 %; the old 20 m/s
+ * curve, 60 % of its speed).
+ */
+export const ROOM_UNDER_RIM = 1;
+
+/**
+ * The slingshot's speeds for a throw from height `y`, m, at a hoop whose rim is at `rimY`, m, under
+ * gravity `g`, m/s^2, in the tall box: the full pull throws straight up to ROOM_OVER_RIM over the rim
+ * (within [6, MAX_THROW_SPEED] m/s), a pull just past nothing to ROOM_UNDER_RIM under it (0 from
+ * higher up; at most 0.9 of the top). So a full pull lobs over the hoop, not into the ceiling, from
+ * wherever it starts, and a short one still rises most of the way to the rim.
+ * @throws RangeError unless y, rimY and g are finite.
+ */
+export function slingRoom(y: number, rimY: number, g: number): SlingRoom {
+  if (![y, rimY, g].every(Number.isFinite)) throw new RangeError(`slingRoom: y, rimY and g must be finite, got ${y}, ${rimY}, ${g}`);
+  const rise = rimY + ROOM_OVER_RIM - y,
+    under = rimY - ROOM_UNDER_RIM - y;
+  const top = g > 0 && rise > 0 ? Math.min(MAX_THROW_SPEED, Math.max(6, Math.sqrt(2 * g * rise))) : g > 0 ? 6 : MAX_THROW_SPEED;
+  return { low: g > 0 && under > 0 ? Math.min(0.9 * top, Math.sqrt(2 * g * under)) : 0, top };
+}
+
+/**
  * The speed of a slingshot throw, m/s, for a pull of `length` px when `fullPull` px throws at
  * MAX_THROW_SPEED: in step with the pull up to SLING_KNEE of fullPull (where the baskets are, a px
  * worth the same speed throughout), then with its square growing evenly (the height a ball reaches,
  * v^2 / 2g, gains the same per px up to the full pull, and as much as at the knee), capped at
  * MAX_THROW_SPEED. A speed linear to the full pull made the height grow with the pull's square: its
  * last px swung a throw from mid-box to the ceiling (twice the height per px of the average).
+ * With a `room` (the tall box's, slingRoom): from room.low just past no pull to room.top at the full
+ * pull, the square of the speed (the height) growing evenly all the way; 0 for no pull.
  * @throws RangeError unless length is finite and >= 0 and fullPull is finite and > 0.
  */
-export function slingSpeed(length: number, fullPull: number): number {
+export function slingSpeed(length: number, fullPull: number, room?: SlingRoom): number {
   if (!(length >= 0 && Number.isFinite(length))) throw new RangeError(`slingSpeed: length must be finite and >= 0 px, got ${length}`);
   if (!(fullPull > 0 && Number.isFinite(fullPull))) throw new RangeError(`slingSpeed: fullPull must be finite and > 0 px, got ${fullPull}`);
   const p = Math.min(1, length / fullPull);
+  if (room) return length === 0 ? 0 : Math.sqrt(room.low * room.low + (room.top * room.top - room.low * room.low) * p);
   if (p <= SLING_KNEE) return KNEE_SLOPE * p;
   return Math.min(MAX_THROW_SPEED, Math.sqrt(KNEE_SPEED * KNEE_SPEED + 2 * KNEE_SPEED * KNEE_SLOPE * (p - SLING_KNEE)));
 }
 
 /**
- * The pull, px, that throws at `speed` m/s when `fullPull` px throws at MAX_THROW_SPEED: the inverse
- * of slingSpeed.
- * @throws RangeError unless speed is in [0, MAX_THROW_SPEED] and fullPull is finite and > 0.
+ * The pull, px, that throws at `speed` m/s when `fullPull` px throws at MAX_THROW_SPEED (at
+ * room.top with a `room`): the inverse of slingSpeed (with a room, 0 for speeds up to room.low).
+ * @throws RangeError unless speed is in [0, MAX_THROW_SPEED] (room.top) and fullPull is finite and > 0.
  */
-export function slingPull(speed: number, fullPull: number): number {
-  if (!(speed >= 0 && speed <= MAX_THROW_SPEED))
-    throw new RangeError(`slingPull: speed must be in [0, ${MAX_THROW_SPEED}] m/s, got ${speed}`);
+export function slingPull(speed: number, fullPull: number, room?: SlingRoom): number {
+  const top = room ? room.top : MAX_THROW_SPEED;
+  if (!(speed >= 0 && speed <= top)) throw new RangeError(`slingPull: speed must be in [0, ${top}] m/s, got ${speed}`);
   if (!(fullPull > 0 && Number.isFinite(fullPull))) throw new RangeError(`slingPull: fullPull must be finite and > 0 px, got ${fullPull}`);
+  if (room) return (fullPull * Math.max(0, speed * speed - room.low * room.low)) / (room.top * room.top - room.low * room.low);
   if (speed <= KNEE_SPEED) return (fullPull * speed) / KNEE_SLOPE;
   return fullPull * (SLING_KNEE + (speed * speed - KNEE_SPEED * KNEE_SPEED) / (2 * KNEE_SPEED * KNEE_SLOPE));
 }
@@ -525,17 +573,17 @@ export function slingPull(speed: number, fullPull: number): number {
 /**
  * The velocity of a slingshot throw, m/s (y up): the ball leaves opposite to the pull (pullX,
  * pullY), px on screen (the pointer minus where the ball starts; y down), at slingSpeed of the pull's
- * length (MAX_THROW_SPEED at `fullPull` and beyond).
+ * length (MAX_THROW_SPEED at `fullPull` and beyond; room.top with a `room`).
  * @throws RangeError unless the pull is finite and fullPull > 0.
  */
-export function slingVelocity(pullX: number, pullY: number, fullPull: number): [number, number] {
+export function slingVelocity(pullX: number, pullY: number, fullPull: number, room?: SlingRoom): [number, number] {
   if (!(Number.isFinite(pullX) && Number.isFinite(pullY)))
     throw new RangeError(`slingVelocity: pull must be finite, got (${pullX}, ${pullY})`);
   if (!(fullPull > 0 && Number.isFinite(fullPull)))
     throw new RangeError(`slingVelocity: fullPull must be finite and > 0 px, got ${fullPull}`);
   const length = Math.hypot(pullX, pullY);
   if (length === 0) return [0, 0];
-  const speed = slingSpeed(length, fullPull);
+  const speed = slingSpeed(length, fullPull, room);
   return [(-pullX / length) * speed, (pullY / length) * speed];
 }
 

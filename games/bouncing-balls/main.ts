@@ -25,7 +25,8 @@
  * press began, on a ball or not; a pull from under the floor (the court's stand) throws the top ball
  * of the heap over it (columnTop; opposite to
  * the pull, faster the longer it is, hoop.ts slingVelocity: the height it reaches grows evenly over
- * the second half of the pull), with a power gauge round the ball and a dotted arc of its flight
+ * the second half of the pull; on a phone held upright over all of it, from 1 m under the hoop's rim
+ * to 3.5 m over it straight up, slingRoom, so every full pull can lob into the hoop), with a power gauge round the ball and a dotted arc of its flight
  * while pulling (hoop.ts throwPath: over its top and down to just above the rim's height, arcSeconds;
  * at least AIM_SECONDS of it, the same all round, 1.5 times as long on
  * a phone held upright (TALL_AIM_SCALE); fading out, up to its first touch of a ball, a wall, a ramp
@@ -47,7 +48,8 @@
  * a pile does not roar. When time is up, the Play-again button floats over the stand under the box's
  * floor, clear of the ramps at its top. Until a press, a ring pulses round a ball to throw
  * (markThrowable; "drag me" over it until the round's first throw). A pull close to one that throws
- * through the middle of the hoop is drawn to it (currentThrow, aim-assist.ts; "on target" by the gauge).
+ * through the middle of the hoop is drawn to it (currentThrow, aim-assist.ts); a throw that goes in
+ * shows its arc on into the net, green, the rim ringed green and "on target" by the gauge (throwScores).
  *
  * Looks: a court (a wall with panels over a wooden floor, the box framed in steel), wooden ramps,
  * plain coloured balls (no rotation marks, no trails unless asked for), a plain white backboard,
@@ -127,6 +129,9 @@ import {
   roundTick,
   SHOT_BONUS,
   type ShotStyle,
+  type SlingRoom,
+  slingPull,
+  slingRoom,
   slingVelocity,
   streakMultiplier,
   TIME_PER_BASKET,
@@ -211,12 +216,13 @@ let hoopMovedAt = Number.NEGATIVE_INFINITY;
  * The balls in flight after a throw: whether each may still score (released below the rim, not up
  * through the net), its centre after the last step, m, what it is worth (BALL_POINTS), the world
  * time it was thrown, s, and what it has touched since (markTouches): anything (`touched`: no swish)
- * and a wall of the box or a ramp (`trick`), and its centre's highest point, m (`top`: missWords). A
- * ball that has not gone in MISS_SECONDS after its throw is a miss and leaves.
+ * and a wall of the box or a ramp (`trick`), its centre's highest point, m (`top`: missWords), and
+ * whether it went up through the net (`up`). A ball that has not gone in MISS_SECONDS after its throw
+ * is a miss and leaves.
  */
 let flights = new Map<
   number,
-  { scores: boolean; x: number; y: number; top: number; kind: BallKind; at: number; touched: boolean; trick: boolean }
+  { scores: boolean; up: boolean; x: number; y: number; top: number; kind: BallKind; at: number; touched: boolean; trick: boolean }
 >();
 /** The player's basketballs (made by a throw or a click from empty space): drawn orange with seams. */
 let basketballs = new Set<number>();
@@ -228,7 +234,7 @@ const HIGH_COLOR = 0x9aa4b5;
 /** The aiming dots of a throw from above the rim's line: lighter than HIGH_COLOR, to stand out on the wall. */
 const HIGH_AIM_COLOR = 0xe6ebf3;
 const GOLD_COLOR = 0xffd23f;
-/** The aiming arc's dots when the aim assist has drawn the throw onto a basket (currentThrow): a bright green, clear of the orange and grey dots. */
+/** The aiming arc's dots and the rim's ring when the throw goes in (throwScores): a bright green, clear of the orange and grey dots. */
 const ON_TARGET_COLOR = 0x5cf08a;
 /** The best round's points (a basket's points: ball x streak) on this court, kept across reloads (best.ts). */
 let best = readBest(pageStorage(), TALL);
@@ -270,7 +276,7 @@ let lastBasket: {
 let missAt = -1e9;
 /** How long the status row says a miss, s of game time. */
 const MISS_SHOWN = 2.5;
-/** What the status row says of the last miss (hoop.ts missWords). */
+/** What the status row says of the last miss (hoop.ts missWords), or of a flick too slow to throw (release). */
 let missSaid = 'Missed';
 
 /** Builds a fresh world with the scene from the current params (the shell calls it at start and on R). */
@@ -727,6 +733,7 @@ function playHoop(world: PhysicsWorld): void {
     if (crossing === 1 && b.scores) {
       // Up through the hoop from below: no basket when it comes back down.
       b.scores = false;
+      b.up = true;
       if (basketballs.has(e)) renderer.setColor(e, HIGH_COLOR);
       if (e === lastThrown) ruleHint = 'below';
     }
@@ -768,7 +775,8 @@ function playHoop(world: PhysicsWorld): void {
     const out = world.time - b.at;
     if (falling || out > MISS_SECONDS_OVER_HOOP || (out > MISS_SECONDS && !overHoop)) {
       flights.delete(e);
-      if (b.scores && round.phase !== 'over') {
+      if (round.phase === 'over') continue;
+      if (b.scores) {
         const broke = roundMiss(round);
         // Every miss is said, with why (a throw off the ceiling back onto the heap looked like none).
         missAt = playSeconds;
@@ -779,6 +787,10 @@ function playHoop(world: PhysicsWorld): void {
           setTimeout(() => sound.chime(220, 0.35), 110);
         }
       }
+      // Said on the court too, where the ball is (the status row is far from a thumb's throw).
+      // Short enough for a phone's court: the streak is in the status row.
+      const ceiling = layoutOf(TALL).box.max[1] - world.components.Ball.radius[slotOf(e)]!;
+      sayOnCourt(b.scores ? missWords(false, b.top, ceiling, spots[hoopAt]!) : b.up ? 'Up through the net' : 'Too high to score', x, y);
     }
   }
   // The hoop stays for BASKETS_PER_HOOP baskets (hoop.ts roundBasket), then moves, once no thrown
@@ -1321,7 +1333,7 @@ function currentThrow(): { x: number; y: number; vx: number; vy: number; radius:
   if (assistMemo.key !== key) assistMemo = { key, ...assistedPull(t, pdx, pdy) };
   if (!assistMemo.on) return t;
   assisting = true;
-  const [vx, vy] = slingVelocity(assistMemo.x, assistMemo.y, fullPullNow);
+  const [vx, vy] = slingVelocity(assistMemo.x, assistMemo.y, fullPullNow, roomAt(t.y));
   return { ...t, vx, vy };
 }
 
@@ -1332,11 +1344,13 @@ function currentThrow(): { x: number; y: number; vx: number; vy: number; radius:
 function assistedPull(t: ReturnType<typeof pulledThrow>, pdx: number, pdy: number): { x: number; y: number; on: boolean } {
   const throwAt = (px: number, py: number): boolean => {
     if (Math.hypot(px, py) > fullPullNow) return false;
-    const [vx, vy] = slingVelocity(px, py, fullPullNow);
+    const [vx, vy] = slingVelocity(px, py, fullPullNow, room);
     return scoresClean({ ...t, vx, vy }, pressBall);
   };
-  const spot = hoopSpots(TALL)[hoopAt]!;
-  const aim = assistAim(pdx, pdy, t.x, t.y, spot, { gravity: handles.params.gravity, fullPull: fullPullNow, finger: pressFinger }, throwAt);
+  const spot = hoopSpots(TALL)[hoopAt]!,
+    room = roomAt(t.y);
+  const options = { gravity: handles.params.gravity, fullPull: fullPullNow, finger: pressFinger, ...(room ? { room } : {}) };
+  const aim = assistAim(pdx, pdy, t.x, t.y, spot, options, throwAt);
   if (aim) return { x: aim[0], y: aim[1], on: true };
   if (!pressFinger) return { x: pdx, y: pdy, on: false };
   const len = Math.hypot(pdx, pdy);
@@ -1375,16 +1389,39 @@ function scoresClean(t: { x: number; y: number; vx: number; vy: number; radius: 
 
 /** The throw the pointer's pull makes as it is (currentThrow before a finger's assist). */
 function pulledThrow(): { x: number; y: number; vx: number; vy: number; radius: number; mass: number } {
-  const [vx, vy] = slingVelocity(lastX - startX, lastY - startY, fullPullNow);
+  const pull = (y: number): [number, number] => slingVelocity(lastX - startX, lastY - startY, fullPullNow, roomAt(y));
   if (pressBall !== 0 && handles.balls.includes(pressBall)) {
     const c = shell.world.components,
       s = slotOf(pressBall);
     // A buried ball is thrown from the top of the heap over it (liftSpot); one with no room there stays.
     const [x, y] = liftSpot(pressBall) ?? [c.Position.x[s]!, c.Position.y[s]!];
+    const [vx, vy] = pull(y);
     return { x, y, vx, vy, radius: c.Ball.radius[s]!, mass: c.Mass.value[s]! };
   }
   const mass = Math.PI * PLAYER_RADIUS * PLAYER_RADIUS * DENSITIES.normal;
+  const [vx, vy] = pull(pressSpot[1]);
   return { x: pressSpot[0], y: pressSpot[1], vx, vy, radius: PLAYER_RADIUS, mass };
+}
+
+/**
+ * The slingshot's speeds for a throw from height `y`, m, in the tall box (a phone held upright; hoop.ts
+ * slingRoom: a full pull lobs to ROOM_OVER_RIM over the hoop's rim), or undefined in the wide box,
+ * whose full pull throws at MAX_THROW_SPEED.
+ */
+function roomAt(y: number): SlingRoom | undefined {
+  return TALL ? slingRoom(y, hoopSpots(TALL)[hoopAt]!.y, handles.params.gravity) : undefined;
+}
+
+/**
+ * The power a throw `t` shows (the gauge, the band, the label), [0, 1]: in the wide box its speed over
+ * MAX_THROW_SPEED; in the tall box the share of the full pull that throws at its speed (roomAt), so
+ * the full pull shows 100 % there too.
+ */
+function powerOf(t: { y: number; vx: number; vy: number }): number {
+  const speed = Math.hypot(t.vx, t.vy),
+    room = roomAt(t.y);
+  if (!room) return Math.min(1, speed / MAX_THROW_SPEED);
+  return speed === 0 ? 0 : slingPull(Math.min(room.top, speed), 1, room);
 }
 
 /** Where the current press's new basketball starts, m (startSpot of the press point): a pull throws it from there, a click drops it there. */
@@ -1660,6 +1697,7 @@ canvas.addEventListener('pointerdown', (event) => {
   boardSaid = false;
   slop = event.pointerType === 'touch' ? TOUCH_SLOP : CLICK_SLOP;
   pressFinger = event.pointerType === 'touch';
+  followed = pulledMost = 0;
   fullPullNow = pressFinger ? fingerFullPull() : fullPull();
   holdStart = performance.now();
   flick.press(px, py, event.timeStamp);
@@ -1721,7 +1759,11 @@ canvas.addEventListener('pointermove', (event) => {
   // A finger above the pull's anchor would throw down, never a basket: the anchor follows it there,
   // so a finger slid up from a ball into open space pulls back from where it is, with room below and
   // to the side (a ball by the screen's edge or bottom boxed the pull in; FINGER_PULL_SCALE).
-  if (pressFinger && !pressStand && lastY < startY) [startX, startY] = [lastX, lastY];
+  if (lastY >= startY) pulledMost = Math.max(pulledMost, Math.hypot(lastX - startX, lastY - startY));
+  if (pressFinger && !pressStand && lastY < startY) {
+    followed += startY - lastY;
+    [startX, startY] = [lastX, lastY];
+  }
 });
 
 /**
@@ -1743,7 +1785,21 @@ function release(event: PointerEvent, cancelled: boolean): void {
   const ball = pressBall;
   const cancel = inCancelZone();
   pressBall = 0;
-  if (cancel) return;
+  if (cancel) {
+    // A finger slid up (the anchor following it) and let go too slowly for a flick: nothing is
+    // thrown, and the court says so, where the finger pressed.
+    if (
+      pressFinger &&
+      followed > slop &&
+      pulledMost <= cancelRadius() &&
+      !(ball !== 0 && handles.balls.includes(ball) && liftSpot(ball) === null)
+    ) {
+      missSaid = 'Too slow to throw: flick up quicker, or pull back';
+      missAt = playSeconds;
+      sayOnCourt('Flick quicker to throw', pressAt[0], pressAt[1]);
+    }
+    return;
+  }
   // What the label said at this pointer's spot decides (the frame's check), so the outcome agrees with
   // it; a release away from the last drawn spot is checked afresh.
   const saidBlocked = Math.hypot(lastX - shownBlocked.x, lastY - shownBlocked.y) < 3 ? shownBlocked.blocked : blockedAtOnce(t, ball);
@@ -1775,6 +1831,10 @@ function release(event: PointerEvent, cancelled: boolean): void {
     if (last) lastCall.ball = e;
   }
 }
+/** How far the current press's anchor has followed a finger up, CSS px (a finger slid up to flick: release). */
+let followed = 0;
+/** The current press's longest pull back (down), CSS px: a finger that slid up and never pulled back was a flick, not a cancel (release). */
+let pulledMost = 0;
 /** The current press's pointer samples (event times), for the speed of a finger's flick as it lets go. */
 const flick = new FlickTracker();
 
@@ -1882,7 +1942,8 @@ function launch(e: number, thrown: boolean): void {
   const scores = mayScore(hoopSpots(TALL)[hoopAt]!, by);
   if (basketballs.has(e)) renderer.setColor(e, scores ? PLAYER_COLOR : HIGH_COLOR);
   // A drop falls: it cannot go down through the hoop from below the rim, nor be a miss.
-  if (thrown) flights.set(e, { scores, x: bx, y: by, top: by, kind: kindOf(e), at: shell.world.time, touched: false, trick: false });
+  if (thrown)
+    flights.set(e, { scores, up: false, x: bx, y: by, top: by, kind: kindOf(e), at: shell.world.time, touched: false, trick: false });
   else flights.delete(e);
   if (round.phase !== 'over' && thrown) {
     roundShot(round);
@@ -1905,8 +1966,39 @@ canvas.addEventListener('pointercancel', (event) => release(event, true));
 function aimPath(): number[] {
   if (pointerId === -1 || !dragged || inCancelZone() || refused()) return [];
   const t = currentThrow();
-  return arcOf(t, pressBall, arcSeconds(t.y, t.vy), 0, 0);
+  return arcOf(t, pressBall, throwScores(t) ? basketSeconds(t.y, t.vy) : arcSeconds(t.y, t.vy), 0, 0);
 }
+
+/**
+ * Whether the throw being pulled, `t` (currentThrow), goes in clean: drawn to a basket by the aim
+ * assist (assisting) or through the opening as it is (scoresClean). Its arc then runs on into the net
+ * (basketSeconds), green, the rim glows and the gauge says "on target" (drawPointer): the player sees
+ * the shot that scores, and learns it. Worked out once for each throw (every frame asks).
+ */
+function throwScores(t: { x: number; y: number; vx: number; vy: number; radius: number; mass: number }): boolean {
+  if (assisting) return true;
+  const key = `${t.x},${t.y},${t.vx},${t.vy},${pressBall},${hoopAt}`;
+  if (scoresMemo.key !== key) scoresMemo = { key, on: scoresClean(t, pressBall) };
+  return scoresMemo.on;
+}
+/** The last throw throwScores judged (its start, velocity, ball and hoop) and whether it goes in. */
+let scoresMemo = { key: '', on: false };
+
+/**
+ * How much of a throw that goes in (throwScores) from height `y`, m, with vertical speed `vy`, m/s,
+ * its aiming arc shows, s: the drag-free time until its centre is BASKET_ARC_BELOW_RIM under the
+ * rim, in the net (at most FLIGHT_SECONDS); it ends sooner at its first touch (the net).
+ */
+function basketSeconds(y: number, vy: number): number {
+  const g = handles.params.gravity;
+  if (!(g > 0)) return arcSeconds(y, vy);
+  const apex = vy > 0 ? vy / g : 0;
+  const drop = y + (vy > 0 ? (vy * vy) / (2 * g) : 0) - (hoopSpots(TALL)[hoopAt]!.y - BASKET_ARC_BELOW_RIM);
+  return Math.min(FLIGHT_SECONDS, Math.max(arcSeconds(y, vy), apex + Math.sqrt(Math.max(0, 2 * drop) / g)));
+}
+/** How far under the rim the arc of a throw that goes in ends, m: inside the net, so the dots are seen to drop through the ring. */
+const BASKET_ARC_BELOW_RIM = 0.6;
+
 /**
  * How much of a throw from height `y`, m, with vertical speed `vy`, m/s (up), its aiming arc shows, s:
  * the drag-free time until it comes back down to ARC_END_ABOVE_RIM over the rim's height, so the
@@ -2143,7 +2235,7 @@ const cutLabel = new Text({
 cutLabel.anchor.set(0.5, 1);
 cutLabel.visible = false;
 
-/** The band's colour for a pull of `power` (speed / MAX_THROW_SPEED, [0, 1]): white, to gold at half, to red at full. */
+/** The band's colour for a pull of `power` (powerOf, [0, 1]): white, to gold at half, to red at full. */
 function powerColor(power: number): number {
   return power < 0.5 ? mixColor(0xffffff, 0xffd166, power / 0.5) : mixColor(0xffd166, 0xff4d4d, (power - 0.5) / 0.5);
 }
@@ -2405,7 +2497,7 @@ function drawPointer(): void {
   // A grey (too high) throw's dots are drawn lighter than its ball: grey dots are lost on the wall.
   const thrownColor = mayScore(hoopSpots(TALL)[hoopAt]!, t.y) ? PLAYER_COLOR : HIGH_AIM_COLOR;
   // The band: thicker and warmer the harder the pull (white, gold, red at full power).
-  const power = Math.min(1, Math.hypot(t.vx, t.vy) / MAX_THROW_SPEED);
+  const power = powerOf(t);
   // It is as long as the pull that counts: a pull past the full pull stops at it with a bar across
   // (the cap), and a faint line goes on from its end to the pointer (there too when a lifted ball
   // moved the band's start off the press point).
@@ -2458,8 +2550,23 @@ function drawPointer(): void {
   const path = aimPath();
   const n = path.length / 2;
   // The dots shrink and fade out along the arc (it ends short of the rim's height: arcSeconds); green
-  // when the aim assist has drawn the throw onto a basket (as the label's "on target").
-  const dotColor = assisting ? ON_TARGET_COLOR : thrownColor;
+  // when the throw goes in (throwScores: drawn to a basket by the aim assist, or as pulled), as the
+  // label's "on target", and the rim glows green under the arc's end in the net.
+  const onTarget = throwScores(t);
+  const dotColor = onTarget ? ON_TARGET_COLOR : thrownColor;
+  if (onTarget) {
+    const spot = hoopSpots(TALL)[hoopAt]!;
+    const hx = cam.toScreenX(spot.x),
+      hy = cam.toScreenY(spot.y),
+      hw = cam.toScreenLength(HOOP_HALF_WIDTH);
+    // Wider than the rim's ellipse, so the rim drawn over it leaves a green halo round it.
+    overlay
+      .ellipse(hx, hy, hw + 10, 14)
+      .fill({ color: ON_TARGET_COLOR, alpha: 0.18 })
+      .stroke({ width: 8, color: 0x0b0f16, alpha: 0.4 })
+      .ellipse(hx, hy, hw + 10, 14)
+      .stroke({ width: 4, color: ON_TARGET_COLOR, alpha: 0.95 });
+  }
   for (let i = 1; i < n; i++) {
     const f = i / n;
     overlay
@@ -2471,8 +2578,8 @@ function drawPointer(): void {
     // A ball of the scene is thrown: a ring round it and what it is worth.
     overlay.circle(ox, oy, or + 4).stroke({ width: 3, color: 0xffffff, alpha: 0.9 });
   } else overlay.circle(ox, oy, or).fill({ color: thrownColor, alpha: 0.85 }).stroke({ width: 2, color: 0xffffff, alpha: 0.9 });
-  // The power gauge: a ring round the ball filling clockwise from the top with the throw's speed (of
-  // MAX_THROW_SPEED) in the band's colour, on a dark track, and the percentage over it.
+  // The power gauge: a ring round the ball filling clockwise from the top with the throw's power
+  // (powerOf) in the band's colour, on a dark track, and the percentage over it.
   const gr = or + 10;
   overlay.circle(ox, oy, gr).stroke({ width: 6, color: 0x0b0f16, alpha: 0.55 });
   const arcSteps = Math.max(1, Math.ceil(60 * power));
@@ -2490,7 +2597,7 @@ function drawPointer(): void {
   // heap), and letting go throws nothing (release).
   const soon = cut?.soon === true;
   shownBlocked = { blocked: soon, x: lastX, y: lastY };
-  let label = `${soon ? 'blocked · ' : ''}power ${Math.round(100 * power)}%${capped ? ' (max)' : ''}${assisting ? ' · on target' : ''}`;
+  let label = `${soon ? 'blocked · ' : ''}power ${Math.round(100 * power)}%${capped && !onTarget ? ' (max)' : ''}${onTarget ? ' · on target' : ''}`;
   if (pressed !== 0) {
     const points = BALL_POINTS[kindOf(pressed)];
     const lifted = lift !== null && (lift[0] !== P.x[slotOf(pressed)] || lift[1] !== P.y[slotOf(pressed)]);
@@ -2559,6 +2666,65 @@ praiseText.visible = false;
 const courtMask = new Graphics({ label: 'confetti-mask' });
 confetti.mask = courtMask;
 app.stage.addChild(courtMask, confetti, popText, praiseText);
+/**
+ * The words of a throw's end that was no basket, said on the court (sayOnCourt; drawOutcome): a miss
+ * and why, a throw that could not score, or a flick too slow to throw. Drawn over the ball where it
+ * ended for OUTCOME_SECONDS, rising and fading, inside the court.
+ */
+const outcomeText = new Text({
+  text: 'Missed',
+  style: {
+    fontFamily: 'system-ui, sans-serif',
+    fontSize: 20,
+    fontWeight: '700',
+    fill: 0xffc2b8,
+    stroke: { color: 0x0b0f16, width: 5 },
+    align: 'center',
+    wordWrap: true,
+    wordWrapWidth: 300,
+  },
+});
+outcomeText.anchor.set(0.5, 1);
+outcomeText.visible = false;
+app.stage.addChild(outcomeText);
+/** How long a throw's end is said on the court, s (world time). */
+const OUTCOME_SECONDS = 2;
+/** The last words said on the court: what, where, m, when, world s, and in which world (a new round's says nothing of the last's). */
+let outcome: { words: string; x: number; y: number; time: number; world: PhysicsWorld | null } = {
+  words: '',
+  x: 0,
+  y: 0,
+  time: Number.NEGATIVE_INFINITY,
+  world: null,
+};
+
+/** Says `words` on the court at (x, y), m, from now (drawOutcome). */
+function sayOnCourt(words: string, x: number, y: number): void {
+  outcome = { words, x, y, time: shell.world.time, world: shell.world };
+}
+
+/** The court's words (sayOnCourt), `age` s after they were said: over their spot, rising 20 px and fading over the last half, kept inside the court. */
+function drawOutcome(age: number): void {
+  outcomeText.visible = age >= 0 && age < OUTCOME_SECONDS && outcome.words !== '' && outcome.world === shell.world;
+  if (!outcomeText.visible) return;
+  const cam = renderer.camera,
+    { box } = layoutOf(TALL);
+  const left = cam.toScreenX(box.min[0]),
+    right = cam.toScreenX(box.max[0]);
+  // Wrapped to the court's width (a phone's is some 360 px).
+  const wrap = Math.max(120, right - left - 16);
+  if (outcomeText.style.wordWrapWidth !== wrap) outcomeText.style.wordWrapWidth = wrap;
+  if (outcomeText.text !== outcome.words) outcomeText.text = outcome.words;
+  const f = age / OUTCOME_SECONDS;
+  const half = outcomeText.width / 2 + 4,
+    top = cam.toScreenY(box.max[1]) + outcomeText.height + 4,
+    bottom = cam.toScreenY(box.min[1]) - 4;
+  const x = half * 2 >= right - left ? (left + right) / 2 : Math.min(right - half, Math.max(left + half, cam.toScreenX(outcome.x)));
+  const y = Math.min(bottom, Math.max(top, cam.toScreenY(outcome.y) - 30 - 20 * f));
+  outcomeText.position.set(x, y);
+  outcomeText.alpha = f < 0.5 ? 1 : 2 * (1 - f);
+}
+
 /** How long a basket's celebration lasts, s (world time). */
 const CELEBRATE_SECONDS = 1.6;
 /** What the praise line says for the n-th basket of a round (1-based): the first few differ. */
@@ -2714,6 +2880,7 @@ function drawHoop(): void {
     else hoopLayer.circle(px, pipY, pipR - 0.75).stroke({ width: 1.5, color: 0xf4f6fb, alpha: 0.8 });
   }
   drawCelebration(world.time - lastBasket.time);
+  drawOutcome(world.time - outcome.time);
   updateStatus();
   placeTouchHint();
 }
@@ -3430,6 +3597,8 @@ shell.expose({
   countdown: (): string => (countdownText.visible ? countdownText.text : ''),
   /** Whether a press is under way (pressed and not yet released, cancelled or ended by the round's end). */
   aiming: (): boolean => pointerId !== -1,
+  /** The words said on the court of the last throw that was no basket ('' when none shows; sayOnCourt), e.g. 'Missed: short of the rim'. */
+  courtWords: (): string => (outcomeText.visible ? outcomeText.text : ''),
   /** The label over the press or the carried ball ('' when none shows), e.g. 'release here to cancel'. */
   aimLabel: (): string => (holdLabel.visible ? holdLabel.text : ''),
   /** The full-speed pull of the current (or last) press, CSS px (fullPull, or fingerFullPull for a finger, when it began). */
