@@ -105,7 +105,7 @@ function onGameStep(event: GameStepEvent): void {
     startSwallow();
     startDeath();
   }
-  if (event === 'fell' || event === 'lost') restarted = true;
+  if (event === 'fell' || event === 'lost') restarted = event;
   if (event === 'scored') sound.chime(880);
   else if (event === 'cleared') sound.chime(1320, 0.6);
   else if (event === 'fell' || event === 'lost' || event === 'over') sound.explosion(event === 'over' ? 1 : event === 'fell' ? 0.8 : 0.6);
@@ -114,7 +114,7 @@ function onGameStep(event: GameStepEvent): void {
  * Set by a fall or an exit: the keys and buttons held are let go, so the ship waits at the start
  * (and the message says what happened) until the player thrusts again.
  */
-let restarted = false;
+let restarted: 'fell' | 'lost' | '' = '';
 /**
  * The last thing that happened to the ship (./wait-words.ts): the words over the field while it waits
  * at the start say this and nothing older. A new world is a new start ('level').
@@ -125,19 +125,21 @@ let happeningBeforeReplay: ShipHappening = 'level';
 /** The holes drawn (`shownHoles`) when the replay began: put back when it is left. */
 let shownHolesBeforeReplay: number[] = [];
 /**
- * The ready moment after a fall or an exit, ms of the wall clock (about the swallow's length): the new
- * ship waits at the start, whatever is pressed, so a press made in the fall's flurry does not fly it
- * straight into a hole. Arrows pressed meanwhile thrust from the first step after it ends. Timed by the
- * wall clock, not by steps: after a slow frame the pacer runs a burst of steps to catch up, and a
- * moment of 60 steps could pass in two or three drawn frames.
+ * The ready beat after a fall, ms of the wall clock: the swallow (SWALLOW_MS) and the ring closing in
+ * on the new ship at the start (RESPAWN_MS), while the words say "Get ready…" and the ship is drawn
+ * dim. The new ship waits at the start whatever is pressed, and a press begun in the beat (an "ok"
+ * after the fall, or a key or finger still down from the flight) is dropped, not kept for later: only
+ * a press begun after it thrusts. (Kept and thrust at the beat's end, such a press launched the new
+ * ship by accident.) Timed by the wall clock, not by steps: after a slow frame the pacer runs a burst
+ * of steps to catch up, and a beat of steps could pass in two or three drawn frames.
  */
-const READY_MS = 1000;
+const READY_MS = 1600;
+/** The ready beat after the ship is lost off the field (no swallow to watch): the ring closing in and a little more, ms. */
+const READY_LOST_MS = 1000;
 /** performance.now() at which the ready moment ends, ms (0: none). */
 let readyEndsAt = 0;
-/** Whether the ready moment after a respawn lasts (no thrust yet). */
+/** Whether the ready beat after a respawn lasts (no thrust yet; presses begun now are dropped). */
 const readying = (): boolean => readyEndsAt > 0 && performance.now() < readyEndsAt;
-/** A press's step while the ready moment lasts: it counts from the step the moment ends (`endReady`). */
-const READY_PENDING = 2 ** 40;
 const sound = getSound();
 /** The ship's engine: hums while thrusting. */
 const engine = sound.engine('propeller');
@@ -337,15 +339,16 @@ const game = await startPixiGame({
     replay.step();
     if (run && !canThrust(bh, run) && held.length > 0) letGo();
     if (restarted) {
-      restarted = false;
+      const by = restarted;
+      restarted = '';
       // Not while a replay plays: its inputs are the recorded ones.
       if (!replay.player) {
         // Keys and fingers down now were pressed for the ship just lost: they are forgotten (their
-        // key-up or lift is ignored, a finger sliding on does not press), so only a press begun after
-        // the respawn thrusts, and none before READY_MS have passed.
+        // key-up or lift is ignored, a finger sliding on does not press), and so is every press begun
+        // in the ready beat (`press`): only a press begun after it thrusts.
         keysDown.clear();
         padPointers.clear();
-        readyEndsAt = performance.now() + READY_MS;
+        readyEndsAt = performance.now() + (by === 'fell' ? READY_MS : READY_LOST_MS);
         letGo();
         applyHeld();
       }
@@ -537,15 +540,9 @@ function endTaps(): void {
   }
 }
 
-/**
- * Ends the ready moment (at the first step after READY_MS): the presses and taps made during it count
- * from this step, and the arrows held thrust.
- */
+/** Ends the ready beat (at the first step after it): presses begun from now on thrust. */
 function endReady(): void {
   readyEndsAt = 0;
-  const now = bh.world.steps;
-  for (const at of pressedAt.values()) if (at.step >= READY_PENDING) [at.step, at.ms] = [now, Math.max(at.ms, performance.now())];
-  for (const [dir, end] of tapEnds) if (end >= READY_PENDING) tapEnds.set(dir, now + TAP_STEPS);
   applyHeld();
 }
 
@@ -558,7 +555,7 @@ function thrustStepsLeft(): number {
   let last = 0;
   for (const dir of held) {
     const end = tapEnds.get(dir);
-    if (end === undefined || end >= READY_PENDING) return Infinity;
+    if (end === undefined) return Infinity;
     last = Math.max(last, end);
   }
   return held.length === 0 ? Infinity : Math.max(0, last - bh.world.steps);
@@ -595,18 +592,16 @@ function advance(): void {
 const eventMs = (e: Event): number => (e.timeStamp > 0 && e.timeStamp <= performance.now() ? e.timeStamp : performance.now());
 /** A key or finger presses arrow `dir` at `ms` (performance.now() ms): it becomes the latest arrow held. */
 function press(dir: Arrow, ms: number): void {
-  // A tap in the ready moment thrusts its TAP_STEPS from the moment's end; a press between two frames
-  // from the step its moment falls in (`pressStartStep`), so it thrusts as at any frame rate.
+  // Begun in the ready beat after a respawn: dropped (its lift finds nothing held, `release`).
+  if (readying() && !replay.player) return;
+  // A press between two frames thrusts from the step its moment falls in (`pressStartStep`), so it
+  // thrusts as at any frame rate.
   const now = bh.world.steps;
-  const step = readying()
-    ? READY_PENDING
-    : game.shell.paused || replay.player
-      ? now
-      : pressStartStep(now, ms, Math.max(lastStepMs, resumedAt), bh.world.dt);
+  const step = game.shell.paused || replay.player ? now : pressStartStep(now, ms, Math.max(lastStepMs, resumedAt), bh.world.dt);
   pressedAt.set(dir, { step, ms });
   // Pressed again while a tap of it thrusts on: the tap's hold becomes this press's.
   if (!tapEnds.delete(dir)) holds.set(dir, (holds.get(dir) ?? 0) + 1);
-  if (step > now && step < READY_PENDING) {
+  if (step > now) {
     pressStarts.set(dir, step);
     return;
   }
@@ -619,16 +614,13 @@ function press(dir: Arrow, ms: number): void {
 /**
  * A key or finger lets go of arrow `dir`: the arrow stays held while another key or finger holds it;
  * the last one let go thrusts on to the step its length asks (`releaseStep`: a tap to TAP_STEPS
- * steps), while the game runs: paused, no game time passes and a key let go lets go at once. Let go
- * in the ready moment after a respawn, it is a tap from the moment's end.
+ * steps), while the game runs: paused, no game time passes and a key let go lets go at once. A press
+ * begun in the ready beat after a respawn was dropped (`press`): its lift lets go of nothing.
  */
 function release(dir: Arrow, ms: number): void {
   const at = pressedAt.get(dir);
   if ((holds.get(dir) ?? 0) === 1 && at && (held.includes(dir) || pressStarts.has(dir)) && !replay.player && !game.shell.paused) {
-    const end =
-      at.step >= READY_PENDING
-        ? READY_PENDING + TAP_STEPS
-        : releaseStep(at.step, Math.max(0, ms - Math.max(at.ms, resumedAt)), bh.world.steps, bh.world.dt);
+    const end = releaseStep(at.step, Math.max(0, ms - Math.max(at.ms, resumedAt)), bh.world.steps, bh.world.dt);
     if (end > bh.world.steps) {
       tapEnds.set(dir, end);
       return;
@@ -871,7 +863,9 @@ pad.element.addEventListener('pointerdown', (e) => {
   // The first thrust shows the player has found the controls: the touch hint goes.
   document.querySelector('[data-hud="touch-hint"]')?.classList.add('bp-gone');
   const dirs = padDirsAt(e.clientX, e.clientY);
-  if (dirs.length === 0 || padPointers.has(e.pointerId)) return;
+  // A finger put down in the ready beat after a respawn holds nothing until it lifts (`press`): sliding
+  // on after the beat does not launch the ship either.
+  if (dirs.length === 0 || padPointers.has(e.pointerId) || (readying() && !replay.player)) return;
   padPointers.set(e.pointerId, dirs);
   for (const d of dirs) press(d, eventMs(e));
 });
@@ -1784,14 +1778,21 @@ function startDeath(): void {
   setWaitWords(FALL_WORDS);
 }
 
-/** Puts the words for the last happening (`happening`) over the field, in `color`. */
-function setWaitWords(color: number): void {
+/** Whether the words last put up were the ready beat's (`setWaitWords`): they change when it ends. */
+let waitReady = false;
+/** The colour the words were last put up in (`setWaitWords`). */
+let waitColor = 0xffffff;
+/** Puts the words for the last happening (`happening`) over the field, in `color` (default the colour they have). */
+function setWaitWords(color = waitColor): void {
+  waitReady = readying();
+  waitColor = color;
   waitText = waitWords(happening, {
     lives: bh.lives,
     practice: run?.spec.practice === true,
     touch,
     missedRing: run?.missedRing === true,
     stranded: run?.stranded ?? '',
+    ready: waitReady,
   });
   deathText.style.fill = color;
   deathText.text = waitText;
@@ -1842,6 +1843,8 @@ function drawDeath(): void {
     app.stage.position.set(amp * Math.sin(age * 0.09), amp * Math.cos(age * 0.07));
   } else if (app.stage.position.x !== 0 || app.stage.position.y !== 0) app.stage.position.set(0, 0);
   const waits = deathWaits();
+  // The ready beat's "Get ready…" becomes how to fly on when it ends.
+  if (waits && waitReady !== readying()) setWaitWords();
   const fresh = age >= 0 && age < DEATH_TEXT_MS && (happening === 'fell' || happening === 'over');
   // Not while the ship spirals in: the caption at the hole says it then (`drawSwallow`).
   deathText.visible = (fresh || waits) && !swallow.active;
@@ -2487,7 +2490,8 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
       .fill({ color: 0xffb347, alpha: 0.9 });
   }
   drawEngineGauge(sx, sy, k, bh.over ? 0 : strength);
-  drawShip(sx, sy, k, shipLean, bh.over ? 0x5c677d : 0xe8ecf1);
+  // Dim while the ready beat after a respawn lasts (no press counts yet), bright once it will fly.
+  drawShip(sx, sy, k, shipLean, bh.over ? 0x5c677d : readying() ? 0x7d889c : 0xe8ecf1);
   updateStatus();
 }
 

@@ -496,7 +496,7 @@ describe('black hole, the replay clock and the paused path words', () => {
 });
 
 describe('black hole, the ready moment', () => {
-  it('after a fall the new ship waits a second of the wall clock, however many steps a slow frame runs meanwhile; an arrow pressed then thrusts once it ends', async () => {
+  it('after a fall the new ship waits out a ready beat of the wall clock, however many steps a slow frame runs meanwhile; an arrow pressed in it never thrusts, a fresh press after it does', async () => {
     type Bh = BlackHolePage & {
       paused: boolean;
       reset(): void;
@@ -528,15 +528,30 @@ describe('black hole, the ready moment', () => {
     expect(early.fell).toBe(true);
     expect(early.left).toBeGreaterThan(0);
     expect(early.thrust).toBe('none');
-    // Running again, the arrow held thrusts once the moment is over.
+    // Running again: the beat ends, and the arrow pressed in it (an "ok" after the fall, still held)
+    // does not launch the ship, for 30 steps after (it did, at the beat's first step after).
     await g.page.evaluate(() => {
       (window.game as unknown as Bh).paused = false;
     });
-    await g.waitFor(() => (window.game as unknown as Bh).bh.thrust === 'left', null);
-    await g.page.evaluate(() => {
-      window.dispatchEvent(new KeyboardEvent('keyup', { key: 'ArrowLeft' }));
-      (window.game as unknown as Bh).reset();
+    await g.waitFor(() => (window.game as unknown as Bh).readyLeft() === 0, null);
+    await g.runFrames(30, { draw: false });
+    const held = await g.page.evaluate(() => {
+      const w = window.game as unknown as Bh;
+      return { thrust: w.bh.thrust, parked: w.level.parked };
     });
+    expect(held).toEqual({ thrust: 'none', parked: true });
+    // A fresh press after the beat thrusts at once.
+    const fresh = await g.page.evaluate(() => {
+      const w = window.game as unknown as Bh;
+      window.dispatchEvent(new KeyboardEvent('keyup', { key: 'ArrowLeft' }));
+      window.dispatchEvent(new KeyboardEvent('keydown', { key: 'ArrowLeft' }));
+      w.step();
+      const thrust = w.bh.thrust;
+      window.dispatchEvent(new KeyboardEvent('keyup', { key: 'ArrowLeft' }));
+      w.reset();
+      return thrust;
+    });
+    expect(fresh).toBe('left');
     expect(g.errors).toEqual([]);
   });
 });
