@@ -68,7 +68,7 @@ import {
   predictPath,
   type Thrust,
 } from './rules';
-import { nextHappening, pausedWords, type ShipHappening, touchStatusLines, waitWords } from './wait-words';
+import { continueWords, nextHappening, pausedWords, type ShipHappening, touchStatusLines, waitWords } from './wait-words';
 
 const search = new URLSearchParams(location.search);
 /** Levels unless ?holes asks for the classic endless game. */
@@ -761,6 +761,7 @@ body .bp-touchbar.bp-action.bh-carded { gap: 8px; }
 .bh-over-card .bh-final { font-weight: 700; }
 .bh-over-card .bh-best::before { content: ' · '; color: #8a94a8; font-weight: 400; }
 .bh-over-card .bh-best.bh-new { color: #7ee787; font-weight: 700; }
+.bh-over-card .bh-next { color: #ffd166; font-size: 13px; }
 /* The touch hint at the top of the stage, over the space above the finish line: at its foot (the
    kit's place) it covered the ship waiting at the start and the path up to the first hole. */
 body .bp-touch-hint { top: 6px; bottom: auto; }
@@ -930,10 +931,12 @@ overCard.className = 'bh-over-card';
 overCard.dataset.hud = 'over-card';
 const overTitle = document.createElement('b'),
   overScore = document.createElement('div'),
-  overBest = document.createElement('div');
+  overBest = document.createElement('div'),
+  overNext = document.createElement('div');
 overScore.className = 'bh-final';
 overBest.className = 'bh-best';
-overCard.append(overTitle, overScore, overBest);
+overNext.className = 'bh-next';
+overCard.append(overTitle, overScore, overBest, overNext);
 /** Shows the game-over card while the game is over (see `overCard`), else takes it away. */
 function updateOverCard(): void {
   const bar = document.querySelector<HTMLElement>('.bp-touchbar.bp-action');
@@ -949,6 +952,10 @@ function updateOverCard(): void {
   if (overTitle.textContent !== lines[0]) overTitle.textContent = lines[0]!;
   if (overScore.textContent !== lines[1]) overScore.textContent = lines[1]!;
   if (overBest.textContent !== lines[2]) overBest.textContent = lines[2]!;
+  // What Continue does to the score (in levels; the classic game's button says "Play again").
+  const next = run ? continueWords(run.spec.level, params.level, touch).card : '';
+  if (overNext.textContent !== next) overNext.textContent = next;
+  overNext.hidden = next === '';
   overBest.classList.toggle('bh-new', fresh);
   if (overCard.parentElement !== bar) {
     bar.prepend(overCard);
@@ -959,12 +966,7 @@ function updateOverCard(): void {
 /** The game-over line in levels: Enter goes on from the level lost (`advance`), R starts again from the first. */
 function overMessage(m: string): string {
   if (!run || !bh.over) return m;
-  return m.replace(
-    'Press Enter or R to play again.',
-    touch
-      ? `Tap to continue from level ${run.spec.level}.`
-      : `Enter: continue from level ${run.spec.level} (score from 0). R: start again from level ${params.level}.`,
-  );
+  return m.replace('Press Enter or R to play again.', continueWords(run.spec.level, params.level, touch).status);
 }
 
 /** The status line while a replay plays: what it is and how to leave it, by touch or keys. */
@@ -2620,8 +2622,14 @@ shell.expose({
   },
   /** How many of the last frame's path dots and ship points (what captions keep off) lie in the box [l, t, r, b], px in the canvas. */
   dotsIn: (l: number, t: number, r: number, b: number): number => dotsIn(l, t, r, b, 0),
-  /** The game-over card's lines while it shows (the final score and the best), else ''. */
-  overCard: (): string => (overCard.isConnected ? [overTitle, overScore, overBest].map((e) => e.textContent).join('\n') : ''),
+  /** The game-over card's lines while it shows (the final score, the best, and in levels what Continue does), else ''. */
+  overCard: (): string =>
+    overCard.isConnected
+      ? [overTitle, overScore, overBest, overNext]
+          .filter((e) => !e.hidden)
+          .map((e) => e.textContent)
+          .join('\n')
+      : '',
   /** The replay's clock, s of game time (`replayClock`: the replayed attempt's, as the status line shows it; 0 when none plays). */
   replayClock: (): number => replayClock(),
   /** Particles drawn in the last frame (exhaust). */

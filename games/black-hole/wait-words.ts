@@ -68,6 +68,27 @@ export function waitWords(happening: ShipHappening, ctx: WaitContext): string {
   }
 }
 
+/** What Continue after a game over does to the score, in words: the points do not carry over. */
+export const CONTINUE_SCORE = 'score resets to 0';
+
+/**
+ * What Continue after a game over does, in words (it plays level `level` again with the lives of a
+ * new game and a score of 0: ./main.ts `advance`): `card`, the game-over card's last line beside the
+ * Continue button; `status`, the status line's end (a tap on a touch screen; Enter, and R to start
+ * again from level `first`, with keys). Continue used to reset the score with no word of it.
+ * @throws RangeError unless level and first are integers >= 1.
+ */
+export function continueWords(level: number, first: number, touch: boolean): { card: string; status: string } {
+  if (!(Number.isInteger(level) && level >= 1 && Number.isInteger(first) && first >= 1))
+    throw new RangeError(`continueWords: level and first must be integers >= 1, got ${level}, ${first}`);
+  return {
+    card: `Continue: level ${level} again, ${CONTINUE_SCORE}`,
+    status: touch
+      ? `Tap to continue from level ${level} (${CONTINUE_SCORE}).`
+      : `Enter: continue from level ${level} (${CONTINUE_SCORE}). R: start again from level ${first}.`,
+  };
+}
+
 /**
  * The happening after a game step's event `event` (./replay.ts `GameStepEvent`) when the last one was
  * `last`: a fall, a loss, a game over replace it; a clear ends the attempt ('level': the next level's

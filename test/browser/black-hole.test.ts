@@ -719,7 +719,7 @@ describe('black hole, between levels', () => {
     }, null);
     expect(covered.holes).toBeGreaterThan(5);
     expect(covered.hits).toBe(0);
-    expect(await g.page.locator('[data-hud="message"]').textContent()).toContain('Enter: continue from level 2');
+    expect(await g.page.locator('[data-hud="message"]').textContent()).toContain('Enter: continue from level 2 (score resets to 0).');
     // The game-over card above the button keeps the final score and the best (the score went to 0
     // with no record of it); the best is the page's, at least the final score.
     const card = await g.page.evaluate(() => {
@@ -728,7 +728,12 @@ describe('black hole, between levels', () => {
     });
     expect(card.score).toBeGreaterThan(0);
     expect(card.best).toBeGreaterThanOrEqual(card.score);
-    expect(card.text).toMatch(new RegExp(`^Game over\nFinal score ${card.score}\n(Best ${card.best}|New best! \\(was \\d+\\))$`));
+    // And says what Continue does: the score does not carry over (it was reset with no word of it).
+    expect(card.text).toMatch(
+      new RegExp(
+        `^Game over\nFinal score ${card.score}\n(Best ${card.best}|New best! \\(was \\d+\\))\nContinue: level 2 again, score resets to 0$`,
+      ),
+    );
     await g.page.keyboard.press('Enter');
     const again = await g.waitFor(() => {
       const w = window.game as unknown as Bh & { bh: { lives: number; over: boolean; score: number } };
@@ -916,7 +921,10 @@ describe.each([
         game.bh.over = true;
         game.bh.message = 'Swallowed! Game over with 0 points. Press Enter or R to play again.';
       });
-      await p.waitFor(() => document.querySelector('[data-hud="message"]')?.textContent?.includes('Tap to continue from level 1.'), null);
+      await p.waitFor(
+        () => document.querySelector('[data-hud="message"]')?.textContent?.includes('Tap to continue from level 1 (score resets to 0).'),
+        null,
+      );
       await p.page.getByRole('button', { name: 'Continue from level 1 ↺' }).waitFor({ state: 'visible', timeout: 5000 });
       await p.clickCanvas(0.5, 0.5);
       await p.waitFor(() => !(window.game as unknown as { bh: { over: boolean } }).bh.over, null);

@@ -10,9 +10,29 @@ import { setPosition, setVelocity } from '@bitphysics/physics';
 import { describe, expect, test } from 'vitest';
 import { beginLevel, clearMessage, levelMessage, levelPoints, levelSpec, startLevel, stepLevel } from '../../games/black-hole/levels';
 import { createBlackHoleGame, setThrust } from '../../games/black-hole/rules';
-import { nextHappening, pausedWords, READY_LINE, type ShipHappening, touchStatusLines, waitWords } from '../../games/black-hole/wait-words';
+import {
+  continueWords,
+  nextHappening,
+  pausedWords,
+  READY_LINE,
+  type ShipHappening,
+  touchStatusLines,
+  waitWords,
+} from '../../games/black-hole/wait-words';
 
 describe('black hole wait words', () => {
+  test('after a game over the words say that Continue resets the score to 0, on the card and the status line, by keys or touch', () => {
+    // A stranger lost the score on Continue with no word of it (the touch line said only "Tap to continue").
+    for (const touch of [false, true]) {
+      const w = continueWords(3, 1, touch);
+      expect(w.card).toBe('Continue: level 3 again, score resets to 0');
+      expect(w.status).toContain('continue from level 3 (score resets to 0).');
+    }
+    expect(continueWords(3, 1, true).status).toMatch(/^Tap /);
+    expect(continueWords(3, 1, false).status).toBe('Enter: continue from level 3 (score resets to 0). R: start again from level 1.');
+    expect(() => continueWords(0, 1, false)).toThrow(RangeError);
+  });
+
   test('in the ready beat after a respawn the words say to wait, not how to fly on (a press then is dropped)', () => {
     // A stranger's "ok" press after a fall launched the new ship; presses in the beat are now dropped
     // (games/black-hole/main.ts READY_MS), so the words must not ask for one until it is over.
