@@ -68,6 +68,7 @@ import {
   predictPath,
   type Thrust,
 } from './rules';
+import { viewBeside } from './view';
 import { continueWords, nextHappening, pausedWords, type ShipHappening, touchStatusLines, waitWords } from './wait-words';
 
 const search = new URLSearchParams(location.search);
@@ -2336,6 +2337,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   }
   if (!shell.paused && wasPaused) resumedAt = performance.now();
   wasPaused = shell.paused;
+  keepPanelOffField();
   showPathToggle();
   coachText.visible = false;
   // The overlay stays right under the ship and its path (layers added later go above them).
@@ -2495,6 +2497,34 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   // Dim while the ready beat after a respawn lasts (no press counts yet), bright once it will fly.
   drawShip(sx, sy, k, shipLean, bh.over ? 0x5c677d : readying() ? 0x7d889c : 0xe8ecf1);
   updateStatus();
+}
+
+/** The field's fit last made by `keepPanelOffField`: the panel's edge, the stage's size and the field's, as one key. */
+let panelFit = '';
+/**
+ * Keeps the settings panel and the menu off the field (called every frame; acts on a change). On a
+ * wide window the settings panel opens over the stage's top right corner while the game runs on: the
+ * field is then fitted left of it, smaller (./view.ts `viewBeside`), and back to the whole stage when
+ * it closes. On a small screen a drawer covers the field and pauses the game (`pauseUnderDrawers`):
+ * resumed (▶ or P) with a drawer open, the drawer closes, so play never goes on under it.
+ */
+function keepPanelOffField(): void {
+  const page = pageLayout();
+  if (page.compact()) {
+    if (page.root.dataset.open !== undefined && !shell.paused) page.open(null);
+  }
+  const cam = renderer.camera;
+  let right = Number.POSITIVE_INFINITY;
+  if (!page.compact() && page.root.dataset.open === 'side' && page.side.offsetWidth > 0)
+    right = page.side.getBoundingClientRect().left - app.canvas.getBoundingClientRect().left - 8;
+  const key = `${Math.round(right)}:${cam.width}:${cam.height}:${playField.width}:${playField.height}`;
+  if (key === panelFit) return;
+  panelFit = key;
+  const view = viewBeside(playField, cam.width, cam.height, cam.padding, right);
+  const v = cam.view;
+  if (v && v.minX === 0 && v.minY === 0 && v.maxX === view && v.maxY === playField.height) return;
+  cam.fit({ minX: 0, minY: 0, maxX: view, maxY: playField.height });
+  game.drawNext();
 }
 
 /** The engine's share of full thrust the gauge round the ship showed in the last frame (0: none drawn). */

@@ -486,6 +486,34 @@ describe('black hole, the replay clock and the paused path words', () => {
     const [l, t, r, b] = boxes.hint;
     const [pl, pt, pr, pb] = boxes.pause;
     expect(l! < pr! && pl! < r! && t! < pb! && pt! < b!, JSON.stringify(boxes)).toBe(false);
+    // The settings panel opened (it lay over the field's top right corner, over the line and the path
+    // there): the field is drawn left of it, and fills the stage again when it closes. 1 px for rounding.
+    type Fit = { renderer: { camera: { toScreenX(x: number): number } }; bh: { field: { width: number } } };
+    // The field's right edge and the panel's left edge (0 wide: closed), px in the page.
+    const edges = (): { right: number; side: number; open: boolean } => {
+      const w = window.game as unknown as Fit,
+        side = document.querySelector('.bp-side')!.getBoundingClientRect();
+      const right = document.querySelector('canvas')!.getBoundingClientRect().left + w.renderer.camera.toScreenX(w.bh.field.width);
+      return { right, side: side.left, open: side.width > 0 };
+    };
+    const before = await g.page.evaluate(edges);
+    expect(before.open).toBe(false);
+    await g.page.getByRole('button', { name: 'parameters and charts' }).click();
+    const beside = await g.waitFor(() => {
+      const w = window.game as unknown as Fit,
+        side = document.querySelector('.bp-side')!.getBoundingClientRect();
+      const right = document.querySelector('canvas')!.getBoundingClientRect().left + w.renderer.camera.toScreenX(w.bh.field.width);
+      return side.width > 0 && right <= side.left + 1 ? { right, side: side.left } : null;
+    }, null);
+    expect(beside.right).toBeLessThan(before.right);
+    await g.page.getByRole('button', { name: 'parameters and charts' }).click();
+    const back = await g.waitFor(() => {
+      const w = window.game as unknown as Fit,
+        side = document.querySelector('.bp-side')!.getBoundingClientRect();
+      const right = document.querySelector('canvas')!.getBoundingClientRect().left + w.renderer.camera.toScreenX(w.bh.field.width);
+      return side.width === 0 ? { right } : null;
+    }, null);
+    expect(Math.abs(back.right - before.right)).toBeLessThan(1);
     await g.page.evaluate(() => {
       const w = window.game as unknown as Bh;
       w.reset();
