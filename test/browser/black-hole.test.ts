@@ -104,8 +104,10 @@ describe('black hole', () => {
     // While the ship spirals in, a caption at the hole says what happened (the words in the field's
     // top band, far from where the eye was, were the only words).
     expect(await g.waitFor(() => (window.game as unknown as BlackHolePage).deathEffect().caption, null)).toBe('Swallowed!');
-    // The words stay while the new ship waits parked for the player's thrust, and say so.
-    expect(death.text).toMatch(/^Swallowed!\nPractice: no life lost\n(Press|Tap) ↑, ← or → to fly on$/);
+    // The words stay while the new ship waits parked for the player's thrust: in the ready beat after
+    // the respawn (a press then is dropped) they say to wait, then how to fly on (read when the flash
+    // was first seen: on a loaded machine that may be after the beat).
+    expect(death.text).toMatch(/^Swallowed!\nPractice: no life lost\n(Get ready…|(Press|Tap) ↑, ← or → to fly on)$/);
     // While the words of the fall show, the path's label is not drawn under them.
     const shown = await g.waitFor(() => {
       const w = window.game as unknown as BlackHolePage;
@@ -115,6 +117,11 @@ describe('black hole', () => {
     expect(shown.label).toBe('');
     // The new ship waits with its engine off: no gauge.
     expect(await g.page.evaluate(() => (window.game as unknown as BlackHolePage).engineGauge())).toBe(0);
+    const go = await g.waitFor(() => {
+      const w = window.game as unknown as BlackHolePage & { readyLeft(): number };
+      return w.readyLeft() === 0 && w.deathEffect().shown && !w.deathEffect().text.endsWith('Get ready…') ? w.deathEffect().text : null;
+    }, null);
+    expect(go).toMatch(/^Swallowed!\nPractice: no life lost\n(Press|Tap) ↑, ← or → to fly on$/);
     await g.page.keyboard.down('ArrowLeft');
     await g.waitFor(() => !(window.game as unknown as BlackHolePage).bh.message.startsWith('Swallowed'), null);
     // Paused as soon as the edge warns, so the ship cannot leave the field meanwhile: ↑ pressed
