@@ -137,7 +137,7 @@ let shownHolesBeforeReplay: number[] = [];
 const READY_MS = 1600;
 /** The ready beat after the ship is lost off the field (no swallow to watch): the ring closing in and a little more, ms. */
 const READY_LOST_MS = 1000;
-/** performance.now() at which the ready moment ends, ms (0: none). */
+/** performance.now() at which the ready beat ends, ms (0: none). */
 let readyEndsAt = 0;
 /** Whether the ready beat after a respawn lasts (no thrust yet; presses begun now are dropped). */
 const readying = (): boolean => readyEndsAt > 0 && performance.now() < readyEndsAt;
@@ -335,7 +335,7 @@ const game = await startPixiGame({
       startPresses();
       endTaps();
     }
-    // The ready moment after a respawn is over: arrows pressed during it thrust from this step.
+    // The ready beat after a respawn is over: presses begun from now on thrust.
     if (!replay.player && readyEndsAt > 0 && performance.now() >= readyEndsAt) endReady();
     replay.step();
     if (run && !canThrust(bh, run) && held.length > 0) letGo();
@@ -2633,7 +2633,7 @@ shell.expose({
     shown: deathText.visible,
     caption: death.caption,
   }),
-  /** Wall-clock time left of the ready moment after a respawn, ms (no thrust until 0; ./main.ts READY_MS). */
+  /** Wall-clock time left of the ready beat after a respawn, ms (0: none; a press begun before it ends is dropped; ./main.ts READY_MS). */
   readyLeft: (): number => (readyEndsAt > 0 ? Math.max(0, readyEndsAt - performance.now()) : 0),
   /** Whether the swallow effect (the ship spiralling into a hole) plays, and whether the edge warning shows. */
   swallowing: (): boolean => swallow.active,
