@@ -68,7 +68,8 @@ import {
   predictPath,
   type Thrust,
 } from './rules';
-import { nextHappening, pausedWords, type ShipHappening, touchStatusLines, waitWords } from './wait-words';
+import { viewBeside } from './view';
+import { continueWords, nextHappening, pausedWords, type ShipHappening, touchStatusLines, waitWords } from './wait-words';
 
 const search = new URLSearchParams(location.search);
 /** Levels unless ?holes asks for the classic endless game. */
@@ -105,7 +106,7 @@ function onGameStep(event: GameStepEvent): void {
     startSwallow();
     startDeath();
   }
-  if (event === 'fell' || event === 'lost') restarted = true;
+  if (event === 'fell' || event === 'lost') restarted = event;
   if (event === 'scored') sound.chime(880);
   else if (event === 'cleared') sound.chime(1320, 0.6);
   else if (event === 'fell' || event === 'lost' || event === 'over') sound.explosion(event === 'over' ? 1 : event === 'fell' ? 0.8 : 0.6);
@@ -114,7 +115,7 @@ function onGameStep(event: GameStepEvent): void {
  * Set by a fall or an exit: the keys and buttons held are let go, so the ship waits at the start
  * (and the message says what happened) until the player thrusts again.
  */
-let restarted = false;
+let restarted: 'fell' | 'lost' | '' = '';
 /**
  * The last thing that happened to the ship (./wait-words.ts): the words over the field while it waits
  * at the start say this and nothing older. A new world is a new start ('level').
@@ -125,19 +126,21 @@ let happeningBeforeReplay: ShipHappening = 'level';
 /** The holes drawn (`shownHoles`) when the replay began: put back when it is left. */
 let shownHolesBeforeReplay: number[] = [];
 /**
- * The ready moment after a fall or an exit, ms of the wall clock (about the swallow's length): the new
- * ship waits at the start, whatever is pressed, so a press made in the fall's flurry does not fly it
- * straight into a hole. Arrows pressed meanwhile thrust from the first step after it ends. Timed by the
- * wall clock, not by steps: after a slow frame the pacer runs a burst of steps to catch up, and a
- * moment of 60 steps could pass in two or three drawn frames.
+ * The ready beat after a fall, ms of the wall clock: the swallow (SWALLOW_MS) and the ring closing in
+ * on the new ship at the start (RESPAWN_MS), while the words say "Get ready…" and the ship is drawn
+ * dim. The new ship waits at the start whatever is pressed, and a press begun in the beat (an "ok"
+ * after the fall, or a key or finger still down from the flight) is dropped, not kept for later: only
+ * a press begun after it thrusts. (Kept and thrust at the beat's end, such a press launched the new
+ * ship by accident.) Timed by the wall clock, not by steps: after a slow frame the pacer runs a burst
+ * of steps to catch up, and a beat of steps could pass in two or three drawn frames.
  */
-const READY_MS = 1000;
-/** performance.now() at which the ready moment ends, ms (0: none). */
+const READY_MS = 1600;
+/** The ready beat after the ship is lost off the field (no swallow to watch): the ring closing in and a little more, ms. */
+const READY_LOST_MS = 1000;
+/** performance.now() at which the ready beat ends, ms (0: none). */
 let readyEndsAt = 0;
-/** Whether the ready moment after a respawn lasts (no thrust yet). */
+/** Whether the ready beat after a respawn lasts (no thrust yet; presses begun now are dropped). */
 const readying = (): boolean => readyEndsAt > 0 && performance.now() < readyEndsAt;
-/** A press's step while the ready moment lasts: it counts from the step the moment ends (`endReady`). */
-const READY_PENDING = 2 ** 40;
 const sound = getSound();
 /** The ship's engine: hums while thrusting. */
 const engine = sound.engine('propeller');
@@ -332,20 +335,21 @@ const game = await startPixiGame({
       startPresses();
       endTaps();
     }
-    // The ready moment after a respawn is over: arrows pressed during it thrust from this step.
+    // The ready beat after a respawn is over: presses begun from now on thrust.
     if (!replay.player && readyEndsAt > 0 && performance.now() >= readyEndsAt) endReady();
     replay.step();
     if (run && !canThrust(bh, run) && held.length > 0) letGo();
     if (restarted) {
-      restarted = false;
+      const by = restarted;
+      restarted = '';
       // Not while a replay plays: its inputs are the recorded ones.
       if (!replay.player) {
         // Keys and fingers down now were pressed for the ship just lost: they are forgotten (their
-        // key-up or lift is ignored, a finger sliding on does not press), so only a press begun after
-        // the respawn thrusts, and none before READY_MS have passed.
+        // key-up or lift is ignored, a finger sliding on does not press), and so is every press begun
+        // in the ready beat (`press`): only a press begun after it thrusts.
         keysDown.clear();
         padPointers.clear();
-        readyEndsAt = performance.now() + READY_MS;
+        readyEndsAt = performance.now() + (by === 'fell' ? READY_MS : READY_LOST_MS);
         letGo();
         applyHeld();
       }
@@ -537,15 +541,9 @@ function endTaps(): void {
   }
 }
 
-/**
- * Ends the ready moment (at the first step after READY_MS): the presses and taps made during it count
- * from this step, and the arrows held thrust.
- */
+/** Ends the ready beat (at the first step after it): presses begun from now on thrust. */
 function endReady(): void {
   readyEndsAt = 0;
-  const now = bh.world.steps;
-  for (const at of pressedAt.values()) if (at.step >= READY_PENDING) [at.step, at.ms] = [now, Math.max(at.ms, performance.now())];
-  for (const [dir, end] of tapEnds) if (end >= READY_PENDING) tapEnds.set(dir, now + TAP_STEPS);
   applyHeld();
 }
 
@@ -558,7 +556,7 @@ function thrustStepsLeft(): number {
   let last = 0;
   for (const dir of held) {
     const end = tapEnds.get(dir);
-    if (end === undefined || end >= READY_PENDING) return Infinity;
+    if (end === undefined) return Infinity;
     last = Math.max(last, end);
   }
   return held.length === 0 ? Infinity : Math.max(0, last - bh.world.steps);
@@ -595,18 +593,16 @@ function advance(): void {
 const eventMs = (e: Event): number => (e.timeStamp > 0 && e.timeStamp <= performance.now() ? e.timeStamp : performance.now());
 /** A key or finger presses arrow `dir` at `ms` (performance.now() ms): it becomes the latest arrow held. */
 function press(dir: Arrow, ms: number): void {
-  // A tap in the ready moment thrusts its TAP_STEPS from the moment's end; a press between two frames
-  // from the step its moment falls in (`pressStartStep`), so it thrusts as at any frame rate.
+  // Begun in the ready beat after a respawn: dropped (its lift finds nothing held, `release`).
+  if (readying() && !replay.player) return;
+  // A press between two frames thrusts from the step its moment falls in (`pressStartStep`), so it
+  // thrusts as at any frame rate.
   const now = bh.world.steps;
-  const step = readying()
-    ? READY_PENDING
-    : game.shell.paused || replay.player
-      ? now
-      : pressStartStep(now, ms, Math.max(lastStepMs, resumedAt), bh.world.dt);
+  const step = game.shell.paused || replay.player ? now : pressStartStep(now, ms, Math.max(lastStepMs, resumedAt), bh.world.dt);
   pressedAt.set(dir, { step, ms });
   // Pressed again while a tap of it thrusts on: the tap's hold becomes this press's.
   if (!tapEnds.delete(dir)) holds.set(dir, (holds.get(dir) ?? 0) + 1);
-  if (step > now && step < READY_PENDING) {
+  if (step > now) {
     pressStarts.set(dir, step);
     return;
   }
@@ -619,16 +615,13 @@ function press(dir: Arrow, ms: number): void {
 /**
  * A key or finger lets go of arrow `dir`: the arrow stays held while another key or finger holds it;
  * the last one let go thrusts on to the step its length asks (`releaseStep`: a tap to TAP_STEPS
- * steps), while the game runs: paused, no game time passes and a key let go lets go at once. Let go
- * in the ready moment after a respawn, it is a tap from the moment's end.
+ * steps), while the game runs: paused, no game time passes and a key let go lets go at once. A press
+ * begun in the ready beat after a respawn was dropped (`press`): its lift lets go of nothing.
  */
 function release(dir: Arrow, ms: number): void {
   const at = pressedAt.get(dir);
   if ((holds.get(dir) ?? 0) === 1 && at && (held.includes(dir) || pressStarts.has(dir)) && !replay.player && !game.shell.paused) {
-    const end =
-      at.step >= READY_PENDING
-        ? READY_PENDING + TAP_STEPS
-        : releaseStep(at.step, Math.max(0, ms - Math.max(at.ms, resumedAt)), bh.world.steps, bh.world.dt);
+    const end = releaseStep(at.step, Math.max(0, ms - Math.max(at.ms, resumedAt)), bh.world.steps, bh.world.dt);
     if (end > bh.world.steps) {
       tapEnds.set(dir, end);
       return;
@@ -769,6 +762,7 @@ body .bp-touchbar.bp-action.bh-carded { gap: 8px; }
 .bh-over-card .bh-final { font-weight: 700; }
 .bh-over-card .bh-best::before { content: ' · '; color: #8a94a8; font-weight: 400; }
 .bh-over-card .bh-best.bh-new { color: #7ee787; font-weight: 700; }
+.bh-over-card .bh-next { color: #ffd166; font-size: 13px; }
 /* The touch hint at the top of the stage, over the space above the finish line: at its foot (the
    kit's place) it covered the ship waiting at the start and the path up to the first hole. */
 body .bp-touch-hint { top: 6px; bottom: auto; }
@@ -871,7 +865,9 @@ pad.element.addEventListener('pointerdown', (e) => {
   // The first thrust shows the player has found the controls: the touch hint goes.
   document.querySelector('[data-hud="touch-hint"]')?.classList.add('bp-gone');
   const dirs = padDirsAt(e.clientX, e.clientY);
-  if (dirs.length === 0 || padPointers.has(e.pointerId)) return;
+  // A finger put down in the ready beat after a respawn holds nothing until it lifts (`press`): sliding
+  // on after the beat does not launch the ship either.
+  if (dirs.length === 0 || padPointers.has(e.pointerId) || (readying() && !replay.player)) return;
   padPointers.set(e.pointerId, dirs);
   for (const d of dirs) press(d, eventMs(e));
 });
@@ -936,10 +932,12 @@ overCard.className = 'bh-over-card';
 overCard.dataset.hud = 'over-card';
 const overTitle = document.createElement('b'),
   overScore = document.createElement('div'),
-  overBest = document.createElement('div');
+  overBest = document.createElement('div'),
+  overNext = document.createElement('div');
 overScore.className = 'bh-final';
 overBest.className = 'bh-best';
-overCard.append(overTitle, overScore, overBest);
+overNext.className = 'bh-next';
+overCard.append(overTitle, overScore, overBest, overNext);
 /** Shows the game-over card while the game is over (see `overCard`), else takes it away. */
 function updateOverCard(): void {
   const bar = document.querySelector<HTMLElement>('.bp-touchbar.bp-action');
@@ -955,6 +953,10 @@ function updateOverCard(): void {
   if (overTitle.textContent !== lines[0]) overTitle.textContent = lines[0]!;
   if (overScore.textContent !== lines[1]) overScore.textContent = lines[1]!;
   if (overBest.textContent !== lines[2]) overBest.textContent = lines[2]!;
+  // What Continue does to the score (in levels; the classic game's button says "Play again").
+  const next = run ? continueWords(run.spec.level, params.level, touch).card : '';
+  if (overNext.textContent !== next) overNext.textContent = next;
+  overNext.hidden = next === '';
   overBest.classList.toggle('bh-new', fresh);
   if (overCard.parentElement !== bar) {
     bar.prepend(overCard);
@@ -965,12 +967,7 @@ function updateOverCard(): void {
 /** The game-over line in levels: Enter goes on from the level lost (`advance`), R starts again from the first. */
 function overMessage(m: string): string {
   if (!run || !bh.over) return m;
-  return m.replace(
-    'Press Enter or R to play again.',
-    touch
-      ? `Tap to continue from level ${run.spec.level}.`
-      : `Enter: continue from level ${run.spec.level} (score from 0). R: start again from level ${params.level}.`,
-  );
+  return m.replace('Press Enter or R to play again.', continueWords(run.spec.level, params.level, touch).status);
 }
 
 /** The status line while a replay plays: what it is and how to leave it, by touch or keys. */
@@ -1784,14 +1781,21 @@ function startDeath(): void {
   setWaitWords(FALL_WORDS);
 }
 
-/** Puts the words for the last happening (`happening`) over the field, in `color`. */
-function setWaitWords(color: number): void {
+/** Whether the words last put up were the ready beat's (`setWaitWords`): they change when it ends. */
+let waitReady = false;
+/** The colour the words were last put up in (`setWaitWords`). */
+let waitColor = 0xffffff;
+/** Puts the words for the last happening (`happening`) over the field, in `color` (default the colour they have). */
+function setWaitWords(color = waitColor): void {
+  waitReady = readying();
+  waitColor = color;
   waitText = waitWords(happening, {
     lives: bh.lives,
     practice: run?.spec.practice === true,
     touch,
     missedRing: run?.missedRing === true,
     stranded: run?.stranded ?? '',
+    ready: waitReady,
   });
   deathText.style.fill = color;
   deathText.text = waitText;
@@ -1842,6 +1846,8 @@ function drawDeath(): void {
     app.stage.position.set(amp * Math.sin(age * 0.09), amp * Math.cos(age * 0.07));
   } else if (app.stage.position.x !== 0 || app.stage.position.y !== 0) app.stage.position.set(0, 0);
   const waits = deathWaits();
+  // The ready beat's "Get ready…" becomes how to fly on when it ends.
+  if (waits && waitReady !== readying()) setWaitWords();
   const fresh = age >= 0 && age < DEATH_TEXT_MS && (happening === 'fell' || happening === 'over');
   // Not while the ship spirals in: the caption at the hole says it then (`drawSwallow`).
   deathText.visible = (fresh || waits) && !swallow.active;
@@ -2331,6 +2337,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
   }
   if (!shell.paused && wasPaused) resumedAt = performance.now();
   wasPaused = shell.paused;
+  keepPanelOffField();
   showPathToggle();
   coachText.visible = false;
   // The overlay stays right under the ship and its path (layers added later go above them).
@@ -2487,8 +2494,37 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
       .fill({ color: 0xffb347, alpha: 0.9 });
   }
   drawEngineGauge(sx, sy, k, bh.over ? 0 : strength);
-  drawShip(sx, sy, k, shipLean, bh.over ? 0x5c677d : 0xe8ecf1);
+  // Dim while the ready beat after a respawn lasts (no press counts yet), bright once it will fly.
+  drawShip(sx, sy, k, shipLean, bh.over ? 0x5c677d : readying() ? 0x7d889c : 0xe8ecf1);
   updateStatus();
+}
+
+/** The field's fit last made by `keepPanelOffField`: the panel's edge, the stage's size and the field's, as one key. */
+let panelFit = '';
+/**
+ * Keeps the settings panel and the menu off the field (called every frame; acts on a change). On a
+ * wide window the settings panel opens over the stage's top right corner while the game runs on: the
+ * field is then fitted left of it, smaller (./view.ts `viewBeside`), and back to the whole stage when
+ * it closes. On a small screen a drawer covers the field and pauses the game (`pauseUnderDrawers`):
+ * resumed (▶ or P) with a drawer open, the drawer closes, so play never goes on under it.
+ */
+function keepPanelOffField(): void {
+  const page = pageLayout();
+  if (page.compact()) {
+    if (page.root.dataset.open !== undefined && !shell.paused) page.open(null);
+  }
+  const cam = renderer.camera;
+  let right = Number.POSITIVE_INFINITY;
+  if (!page.compact() && page.root.dataset.open === 'side' && page.side.offsetWidth > 0)
+    right = page.side.getBoundingClientRect().left - app.canvas.getBoundingClientRect().left - 8;
+  const key = `${Math.round(right)}:${cam.width}:${cam.height}:${playField.width}:${playField.height}`;
+  if (key === panelFit) return;
+  panelFit = key;
+  const view = viewBeside(playField, cam.width, cam.height, cam.padding, right);
+  const v = cam.view;
+  if (v && v.minX === 0 && v.minY === 0 && v.maxX === view && v.maxY === playField.height) return;
+  cam.fit({ minX: 0, minY: 0, maxX: view, maxY: playField.height });
+  game.drawNext();
 }
 
 /** The engine's share of full thrust the gauge round the ship showed in the last frame (0: none drawn). */
@@ -2597,7 +2633,7 @@ shell.expose({
     shown: deathText.visible,
     caption: death.caption,
   }),
-  /** Wall-clock time left of the ready moment after a respawn, ms (no thrust until 0; ./main.ts READY_MS). */
+  /** Wall-clock time left of the ready beat after a respawn, ms (0: none; a press begun before it ends is dropped; ./main.ts READY_MS). */
   readyLeft: (): number => (readyEndsAt > 0 ? Math.max(0, readyEndsAt - performance.now()) : 0),
   /** Whether the swallow effect (the ship spiralling into a hole) plays, and whether the edge warning shows. */
   swallowing: (): boolean => swallow.active,
@@ -2616,8 +2652,14 @@ shell.expose({
   },
   /** How many of the last frame's path dots and ship points (what captions keep off) lie in the box [l, t, r, b], px in the canvas. */
   dotsIn: (l: number, t: number, r: number, b: number): number => dotsIn(l, t, r, b, 0),
-  /** The game-over card's lines while it shows (the final score and the best), else ''. */
-  overCard: (): string => (overCard.isConnected ? [overTitle, overScore, overBest].map((e) => e.textContent).join('\n') : ''),
+  /** The game-over card's lines while it shows (the final score, the best, and in levels what Continue does), else ''. */
+  overCard: (): string =>
+    overCard.isConnected
+      ? [overTitle, overScore, overBest, overNext]
+          .filter((e) => !e.hidden)
+          .map((e) => e.textContent)
+          .join('\n')
+      : '',
   /** The replay's clock, s of game time (`replayClock`: the replayed attempt's, as the status line shows it; 0 when none plays). */
   replayClock: (): number => replayClock(),
   /** Particles drawn in the last frame (exhaust). */

@@ -25,11 +25,19 @@ export interface WaitContext {
    * (./levels.ts `LevelRun.stranded`: 'orbit', 'stall', 'fuel'); default '' (lost off the field).
    */
   readonly stranded?: '' | 'orbit' | 'stall' | 'fuel';
+  /**
+   * Whether the ready beat after the respawn lasts (./main.ts READY_MS): a press begun now is dropped,
+   * so the last line says "Get ready…" (READY_LINE) instead of how to fly on. Default false.
+   */
+  readonly ready?: boolean;
 }
+
+/** The last line of a fall's or a loss's words during the ready beat after the respawn (`WaitContext.ready`). */
+export const READY_LINE = 'Get ready…';
 
 /**
  * The words for `happening`, lines separated by '\n': a fall's ("Swallowed!", the lives left or the
- * practice note, how to go on), a loss off the field's ("Lost in space", or "Missed the ring" past the
+ * practice note, how to go on, or READY_LINE while the ready beat lasts), a loss off the field's ("Lost in space", or "Missed the ring" past the
  * line with a ring left; "Caught in orbit", "Caught among the holes" or "Out of fuel" for an attempt
  * ended stranded; no life lost; how to go on), a
  * game over's; '' when there is nothing to say ('level', 'flying').
@@ -39,7 +47,8 @@ export function waitWords(happening: ShipHappening, ctx: WaitContext): string {
   if (!(Number.isInteger(ctx.lives) && ctx.lives >= 0 && ctx.lives <= 99))
     throw new RangeError(`waitWords: ctx.lives must be an integer in [0, 99], got ${String(ctx.lives)}`);
   // ↓ alone on the start pad does nothing (./rules.ts `padThrust`): the words name the arrows that launch.
-  const go = ctx.touch ? 'Tap ↑, ← or → to fly on' : 'Press ↑, ← or → to fly on';
+  // In the ready beat a press is dropped: the words say to wait, and how to fly on once it is over.
+  const go = ctx.ready === true ? READY_LINE : ctx.touch ? 'Tap ↑, ← or → to fly on' : 'Press ↑, ← or → to fly on';
   switch (happening) {
     case 'over':
       return 'Swallowed!\nGame over';
@@ -57,6 +66,27 @@ export function waitWords(happening: ShipHappening, ctx: WaitContext): string {
     default:
       return '';
   }
+}
+
+/** What Continue after a game over does to the score, in words: the points do not carry over. */
+export const CONTINUE_SCORE = 'score resets to 0';
+
+/**
+ * What Continue after a game over does, in words (it plays level `level` again with the lives of a
+ * new game and a score of 0: ./main.ts `advance`): `card`, the game-over card's last line beside the
+ * Continue button; `status`, the status line's end (a tap on a touch screen; Enter, and R to start
+ * again from level `first`, with keys). Continue used to reset the score with no word of it.
+ * @throws RangeError unless level and first are integers >= 1.
+ */
+export function continueWords(level: number, first: number, touch: boolean): { card: string; status: string } {
+  if (!(Number.isInteger(level) && level >= 1 && Number.isInteger(first) && first >= 1))
+    throw new RangeError(`continueWords: level and first must be integers >= 1, got ${level}, ${first}`);
+  return {
+    card: `Continue: level ${level} again, ${CONTINUE_SCORE}`,
+    status: touch
+      ? `Tap to continue from level ${level} (${CONTINUE_SCORE}).`
+      : `Enter: continue from level ${level} (${CONTINUE_SCORE}). R: start again from level ${first}.`,
+  };
 }
 
 /**

@@ -21,8 +21,26 @@ afterAll(async () => {
 });
 
 describe('black hole on a phone, the path and the continue panel', () => {
-  it('on level 3 the path runs 2 s ahead, and its words say so (they said 3 s on every level)', async () => {
+  it('on level 3 the path runs 2 s ahead, and its words say so (they said 3 s on every level); ▶ with the menu open closes it', async () => {
     type Path = { pathPoints(): number; padPath(): boolean; pathHint(): string; bh: { world: { dt: number } } };
+    // The ≡ menu lies over the field and pauses the game; ▶ then plays on with the menu closed (it
+    // stayed open over the ship's path, the game running under it).
+    const tapButton = async (name: string): Promise<void> => {
+      const b = (await g.page.getByRole('button', { name, exact: true }).boundingBox())!;
+      await g.page.touchscreen.tap(b.x + b.width / 2, b.y + b.height / 2);
+    };
+    await tapButton('information and controls');
+    await g.waitFor(
+      () => (window.game as unknown as { paused: boolean }).paused && document.querySelector('.bp-app')!.hasAttribute('data-open'),
+      null,
+    );
+    await tapButton('pause / resume (P)');
+    const menu = await g.waitFor(() => {
+      const open = document.querySelector('.bp-app')!.hasAttribute('data-open'),
+        paused = (window.game as unknown as { paused: boolean }).paused;
+      return !paused && !open ? { open, paused } : null;
+    }, null);
+    expect(menu).toEqual({ open: false, paused: false });
     // A tap of ↑ by touch: the path then runs on from the ship, and the words by its end say how far.
     const up = (await g.page.getByRole('button', { name: 'thrust up', exact: true }).boundingBox())!;
     await g.page.touchscreen.tap(up.x + up.width / 2, up.y + up.height / 2);

@@ -104,8 +104,10 @@ describe('black hole', () => {
     // While the ship spirals in, a caption at the hole says what happened (the words in the field's
     // top band, far from where the eye was, were the only words).
     expect(await g.waitFor(() => (window.game as unknown as BlackHolePage).deathEffect().caption, null)).toBe('Swallowed!');
-    // The words stay while the new ship waits parked for the player's thrust, and say so.
-    expect(death.text).toMatch(/^Swallowed!\nPractice: no life lost\n(Press|Tap) ↑, ← or → to fly on$/);
+    // The words stay while the new ship waits parked for the player's thrust: in the ready beat after
+    // the respawn (a press then is dropped) they say to wait, then how to fly on (read when the flash
+    // was first seen: on a loaded machine that may be after the beat).
+    expect(death.text).toMatch(/^Swallowed!\nPractice: no life lost\n(Get ready…|(Press|Tap) ↑, ← or → to fly on)$/);
     // While the words of the fall show, the path's label is not drawn under them.
     const shown = await g.waitFor(() => {
       const w = window.game as unknown as BlackHolePage;
@@ -115,6 +117,11 @@ describe('black hole', () => {
     expect(shown.label).toBe('');
     // The new ship waits with its engine off: no gauge.
     expect(await g.page.evaluate(() => (window.game as unknown as BlackHolePage).engineGauge())).toBe(0);
+    const go = await g.waitFor(() => {
+      const w = window.game as unknown as BlackHolePage & { readyLeft(): number };
+      return w.readyLeft() === 0 && w.deathEffect().shown && !w.deathEffect().text.endsWith('Get ready…') ? w.deathEffect().text : null;
+    }, null);
+    expect(go).toMatch(/^Swallowed!\nPractice: no life lost\n(Press|Tap) ↑, ← or → to fly on$/);
     await g.page.keyboard.down('ArrowLeft');
     await g.waitFor(() => !(window.game as unknown as BlackHolePage).bh.message.startsWith('Swallowed'), null);
     // Paused as soon as the edge warns, so the ship cannot leave the field meanwhile: ↑ pressed
@@ -486,6 +493,34 @@ describe('black hole, the replay clock and the paused path words', () => {
     const [l, t, r, b] = boxes.hint;
     const [pl, pt, pr, pb] = boxes.pause;
     expect(l! < pr! && pl! < r! && t! < pb! && pt! < b!, JSON.stringify(boxes)).toBe(false);
+    // The settings panel opened (it lay over the field's top right corner, over the line and the path
+    // there): the field is drawn left of it, and fills the stage again when it closes. 1 px for rounding.
+    type Fit = { renderer: { camera: { toScreenX(x: number): number } }; bh: { field: { width: number } } };
+    // The field's right edge and the panel's left edge (0 wide: closed), px in the page.
+    const edges = (): { right: number; side: number; open: boolean } => {
+      const w = window.game as unknown as Fit,
+        side = document.querySelector('.bp-side')!.getBoundingClientRect();
+      const right = document.querySelector('canvas')!.getBoundingClientRect().left + w.renderer.camera.toScreenX(w.bh.field.width);
+      return { right, side: side.left, open: side.width > 0 };
+    };
+    const before = await g.page.evaluate(edges);
+    expect(before.open).toBe(false);
+    await g.page.getByRole('button', { name: 'parameters and charts' }).click();
+    const beside = await g.waitFor(() => {
+      const w = window.game as unknown as Fit,
+        side = document.querySelector('.bp-side')!.getBoundingClientRect();
+      const right = document.querySelector('canvas')!.getBoundingClientRect().left + w.renderer.camera.toScreenX(w.bh.field.width);
+      return side.width > 0 && right <= side.left + 1 ? { right, side: side.left } : null;
+    }, null);
+    expect(beside.right).toBeLessThan(before.right);
+    await g.page.getByRole('button', { name: 'parameters and charts' }).click();
+    const back = await g.waitFor(() => {
+      const w = window.game as unknown as Fit,
+        side = document.querySelector('.bp-side')!.getBoundingClientRect();
+      const right = document.querySelector('canvas')!.getBoundingClientRect().left + w.renderer.camera.toScreenX(w.bh.field.width);
+      return side.width === 0 ? { right } : null;
+    }, null);
+    expect(Math.abs(back.right - before.right)).toBeLessThan(1);
     await g.page.evaluate(() => {
       const w = window.game as unknown as Bh;
       w.reset();
@@ -496,7 +531,7 @@ describe('black hole, the replay clock and the paused path words', () => {
 });
 
 describe('black hole, the ready moment', () => {
-  it('after a fall the new ship waits a second of the wall clock, however many steps a slow frame runs meanwhile; an arrow pressed then thrusts once it ends', async () => {
+  it('after a fall the new ship waits out a ready beat of the wall clock, however many steps a slow frame runs meanwhile; an arrow pressed in it never thrusts, a fresh press after it does', async () => {
     type Bh = BlackHolePage & {
       paused: boolean;
       reset(): void;
@@ -528,15 +563,30 @@ describe('black hole, the ready moment', () => {
     expect(early.fell).toBe(true);
     expect(early.left).toBeGreaterThan(0);
     expect(early.thrust).toBe('none');
-    // Running again, the arrow held thrusts once the moment is over.
+    // Running again: the beat ends, and the arrow pressed in it (an "ok" after the fall, still held)
+    // does not launch the ship, for 30 steps after (it did, at the beat's first step after).
     await g.page.evaluate(() => {
       (window.game as unknown as Bh).paused = false;
     });
-    await g.waitFor(() => (window.game as unknown as Bh).bh.thrust === 'left', null);
-    await g.page.evaluate(() => {
-      window.dispatchEvent(new KeyboardEvent('keyup', { key: 'ArrowLeft' }));
-      (window.game as unknown as Bh).reset();
+    await g.waitFor(() => (window.game as unknown as Bh).readyLeft() === 0, null);
+    await g.runFrames(30, { draw: false });
+    const held = await g.page.evaluate(() => {
+      const w = window.game as unknown as Bh;
+      return { thrust: w.bh.thrust, parked: w.level.parked };
     });
+    expect(held).toEqual({ thrust: 'none', parked: true });
+    // A fresh press after the beat thrusts at once.
+    const fresh = await g.page.evaluate(() => {
+      const w = window.game as unknown as Bh;
+      window.dispatchEvent(new KeyboardEvent('keyup', { key: 'ArrowLeft' }));
+      window.dispatchEvent(new KeyboardEvent('keydown', { key: 'ArrowLeft' }));
+      w.step();
+      const thrust = w.bh.thrust;
+      window.dispatchEvent(new KeyboardEvent('keyup', { key: 'ArrowLeft' }));
+      w.reset();
+      return thrust;
+    });
+    expect(fresh).toBe('left');
     expect(g.errors).toEqual([]);
   });
 });
@@ -704,7 +754,7 @@ describe('black hole, between levels', () => {
     }, null);
     expect(covered.holes).toBeGreaterThan(5);
     expect(covered.hits).toBe(0);
-    expect(await g.page.locator('[data-hud="message"]').textContent()).toContain('Enter: continue from level 2');
+    expect(await g.page.locator('[data-hud="message"]').textContent()).toContain('Enter: continue from level 2 (score resets to 0).');
     // The game-over card above the button keeps the final score and the best (the score went to 0
     // with no record of it); the best is the page's, at least the final score.
     const card = await g.page.evaluate(() => {
@@ -713,7 +763,12 @@ describe('black hole, between levels', () => {
     });
     expect(card.score).toBeGreaterThan(0);
     expect(card.best).toBeGreaterThanOrEqual(card.score);
-    expect(card.text).toMatch(new RegExp(`^Game over\nFinal score ${card.score}\n(Best ${card.best}|New best! \\(was \\d+\\))$`));
+    // And says what Continue does: the score does not carry over (it was reset with no word of it).
+    expect(card.text).toMatch(
+      new RegExp(
+        `^Game over\nFinal score ${card.score}\n(Best ${card.best}|New best! \\(was \\d+\\))\nContinue: level 2 again, score resets to 0$`,
+      ),
+    );
     await g.page.keyboard.press('Enter');
     const again = await g.waitFor(() => {
       const w = window.game as unknown as Bh & { bh: { lives: number; over: boolean; score: number } };
@@ -901,7 +956,10 @@ describe.each([
         game.bh.over = true;
         game.bh.message = 'Swallowed! Game over with 0 points. Press Enter or R to play again.';
       });
-      await p.waitFor(() => document.querySelector('[data-hud="message"]')?.textContent?.includes('Tap to continue from level 1.'), null);
+      await p.waitFor(
+        () => document.querySelector('[data-hud="message"]')?.textContent?.includes('Tap to continue from level 1 (score resets to 0).'),
+        null,
+      );
       await p.page.getByRole('button', { name: 'Continue from level 1 ↺' }).waitFor({ state: 'visible', timeout: 5000 });
       await p.clickCanvas(0.5, 0.5);
       await p.waitFor(() => !(window.game as unknown as { bh: { over: boolean } }).bh.over, null);

@@ -13,19 +13,26 @@ const show = (fs: readonly ReturnType<typeof levelFigures>[]): string =>
   JSON.stringify(fs.map((f) => [f.level, f.tries, f.success.toFixed(2), f.time.toFixed(1)]));
 
 describe('black hole difficulty curve', () => {
-  test('the middle player clears levels 1 to 5 on every seed: level 1 at the first try but not in a dash, none after it easier, none a cliff', () => {
+  test('the middle player clears levels 1 to 5 on every seed: level 1 at the first try but not in a dash, the later ones asking more, none a cliff', () => {
     const figures = [1, 2, 3, 4, 5].map((level) => levelFigures(level, PLAYERS.middle, 4, 60));
     const where = show(figures);
     for (const f of figures) expect(f.cleared, `level ${f.level}: ${where}`).toBe(4);
     // Holding up reaches the line in about 2.7 s; level 1's one hole makes the player steer for more than 4 s.
     expect(figures[0]!.success, where).toBe(1);
     expect(figures[0]!.time, where).toBeGreaterThan(4);
-    for (const f of figures.slice(1)) {
-      // Each later level asks more than practice: some seed takes a second try.
-      expect(f.success, `level ${f.level}: ${where}`).toBeLessThan(1);
-      // No cliff: a try clears at least 2 times in 5 (level 5 once took 24 tries on a seed).
-      expect(f.success, `level ${f.level}: ${where}`).toBeGreaterThanOrEqual(0.4);
-    }
+    // The levels after practice ask more of it: on some seed of levels 4 and 5 it takes a second try.
+    // (Levels 2 and 3 may go at the first try: they are the first steps after practice, kept gentle.)
+    expect(Math.min(figures[3]!.success, figures[4]!.success), where).toBeLessThan(1);
+    // No cliff: a try clears at least 2 times in 5 (level 5 once took 24 tries on a seed).
+    for (const f of figures.slice(1)) expect(f.success, `level ${f.level}: ${where}`).toBeGreaterThanOrEqual(0.4);
+  });
+
+  test("the step from practice to level 2's wall is no cliff: on the phone's field a slow player's try clears it at least 1 time in 2", () => {
+    // A stranger's first run ended on level 2. On the 20 x 30 m field the slow player's success there
+    // was 0.07 (seeds 1-12; 5 to 7 tries a seed, falling into the holes at the wall's gap edge) after
+    // level 1's 0.96; now 0.68. Seeds 1-4 to stay cheap: 0.5 allows a seed's extra try or two.
+    const f = levelFigures(2, PLAYERS.slow, 4, 60, { width: 20, height: 30 });
+    expect(f.success, show([f])).toBeGreaterThanOrEqual(0.5);
   });
 
   test('the slow player meets no cliff from level 2 to 4: the chance a try clears falls by under 0.3 a level', () => {

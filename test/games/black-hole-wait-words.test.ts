@@ -10,9 +10,47 @@ import { setPosition, setVelocity } from '@bitphysics/physics';
 import { describe, expect, test } from 'vitest';
 import { beginLevel, clearMessage, levelMessage, levelPoints, levelSpec, startLevel, stepLevel } from '../../games/black-hole/levels';
 import { createBlackHoleGame, setThrust } from '../../games/black-hole/rules';
-import { nextHappening, pausedWords, type ShipHappening, touchStatusLines, waitWords } from '../../games/black-hole/wait-words';
+import {
+  continueWords,
+  nextHappening,
+  pausedWords,
+  READY_LINE,
+  type ShipHappening,
+  touchStatusLines,
+  waitWords,
+} from '../../games/black-hole/wait-words';
 
 describe('black hole wait words', () => {
+  test('after a game over the words say that Continue resets the score to 0, on the card and the status line, by keys or touch', () => {
+    // A stranger lost the score on Continue with no word of it (the touch line said only "Tap to continue").
+    for (const touch of [false, true]) {
+      const w = continueWords(3, 1, touch);
+      expect(w.card).toBe('Continue: level 3 again, score resets to 0');
+      expect(w.status).toContain('continue from level 3 (score resets to 0).');
+    }
+    expect(continueWords(3, 1, true).status).toMatch(/^Tap /);
+    expect(continueWords(3, 1, false).status).toBe('Enter: continue from level 3 (score resets to 0). R: start again from level 1.');
+    expect(() => continueWords(0, 1, false)).toThrow(RangeError);
+  });
+
+  test('in the ready beat after a respawn the words say to wait, not how to fly on (a press then is dropped)', () => {
+    // A stranger's "ok" press after a fall launched the new ship; presses in the beat are now dropped
+    // (games/black-hole/main.ts READY_MS), so the words must not ask for one until it is over.
+    for (const touch of [false, true])
+      for (const [happening, lives] of [
+        ['fell', 2],
+        ['lost', 3],
+      ] as const) {
+        const ctx = { lives, practice: false, touch };
+        const ready = waitWords(happening, { ...ctx, ready: true }).split('\n'),
+          after = waitWords(happening, ctx).split('\n');
+        expect(ready.at(-1)).toBe(READY_LINE);
+        expect(after.at(-1)).toMatch(/^(Press|Tap) ↑, ← or → to fly on$/);
+        // The rest (what happened, the lives) is the same in the beat and after it.
+        expect(ready.slice(0, -1)).toEqual(after.slice(0, -1));
+      }
+  });
+
   test('a fall, a clear, the next level, a loss: the words follow the last event only', () => {
     const g = createBlackHoleGame({ seed: 3 });
     const run = startLevel(g, 1);
