@@ -111,7 +111,7 @@ import { adviseAim, adviseBurn, createAimAdvice, createBurnAdvice, SPEED_STEP, s
 import { displayRadius, toDisplay } from './distance-scale';
 import { copyForecast, createForecast, ForecastJob } from './forecast';
 import { keplerState } from './kepler';
-import { meetingWords } from './meeting-words';
+import { forecastWords, meetingWords } from './meeting-words';
 import {
   type Aim,
   BURN_STEP,
@@ -2475,12 +2475,14 @@ function reading(m: Mission): [string, string] {
  * The reading line's verdict on the meeting at point `i` of the forecast's path (`pathCrossing`),
  * ./meeting-words.ts meetingWords: exact on the first mission (a hit, "✓ Mars will be there" and the
  * stars, else by how many days the target misses the probe there, ./orbit-crossing.ts targetLag),
- * coarse from the second on ("Mars will be close", "a little behind", "far ahead").
+ * coarse from the second on, from the flight's real closest approach ("Mars will be close", "a
+ * little behind", "far ahead": ./meeting-words.ts forecastWords).
  */
 function meetingVerdict(m: Mission, i: number): [string, string] {
+  if (missionIndex > 0) return forecastWords(m.target, forecast, m.zone, crossingTarget);
   const lag = targetLag(forecast, i, crossingTarget, sunMu());
   const arrived = forecast.outcome === 'arrived';
-  return meetingWords(m.target, lag, arrived, missionIndex === 0, starText(starsFor(m, aim.speed)), missWords(forecast.closest, m.zone));
+  return meetingWords(m.target, lag, arrived, starText(starsFor(m, aim.speed)), missWords(forecast.closest, m.zone));
 }
 /** The path's crossings of the target's orbit (`reading`), indices into the forecast's path. */
 const crossingList: number[] = [];
