@@ -306,6 +306,7 @@ function stepWorld(world: PhysicsWorld): void {
     wait.mode = 'off';
   }
   if (phase === 'flight') flightTicks++;
+  if (waiting) heldTicks++;
   const dt = flight && phase === 'flight' ? flight.dt : missionTimeStep(mission(), baseStep());
   if (wait.mode === 'off') carry += currentRate() * TICK;
   else {
@@ -406,6 +407,13 @@ let waiting = false;
 const wait = createWaitState();
 /** Whether the press of Wait under way stopped a tap's run (its release then starts nothing). */
 let stopPress = false;
+/** Loop ticks run since Wait was last pressed: under WAIT_TAP_TICKS of them the press is a tap too. */
+let heldTicks = 0;
+/**
+ * A press of Wait that ran fewer loop ticks than this (a quarter second of game time) is a tap,
+ * however long it took by the clock (a loaded machine or a paused game runs few ticks).
+ */
+const WAIT_TAP_TICKS = 15;
 /** World time, days, the test hook's run to the window runs time to and stops at; NaN for none. */
 let runTo = Number.NaN;
 /** Whether runTo is a launch window (the hook's run): the date line then names it. */
@@ -430,19 +438,22 @@ function pressWait(): void {
   if (waiting) return;
   waiting = true;
   waitPressedAt = performance.now();
+  heldTicks = 0;
   stopPress = phase === 'aim' && wait.mode === 'run';
   if (stopPress) stopWait();
   else if (phase === 'aim') Object.assign(wait, { mode: 'held', waited: 0, pause: 0 });
 }
 /**
- * Lets Wait go: after a tap (shorter than WAIT_TAP_MS) while aiming, time runs on to the next launch
- * window and stops there (unless the tap itself stopped at one); after a hold it stops.
+ * Lets Wait go: after a tap (shorter than WAIT_TAP_MS or WAIT_TAP_TICKS) while aiming, time runs
+ * on to the next launch window and stops there (unless the tap itself stopped at one); after a hold
+ * it stops.
  */
 function releaseWait(): void {
   if (!waiting) return;
   waiting = false;
   if (stopPress || wait.mode !== 'held') return;
-  if (performance.now() - waitPressedAt < WAIT_TAP_MS && wait.pause === 0) wait.mode = 'run';
+  const tap = performance.now() - waitPressedAt < WAIT_TAP_MS || heldTicks < WAIT_TAP_TICKS;
+  if (tap && wait.pause === 0) wait.mode = 'run';
   else stopWait();
 }
 /** Stops Wait's time (a hold's or a tap's run). */
