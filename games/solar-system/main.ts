@@ -142,7 +142,7 @@ import {
 } from './missions';
 import { meetingPoint, orbitCrossings, orbitRadiusToward, orbitReach, pathDay, targetLag } from './orbit-crossing';
 import { type TagBox, tagPlace } from './tag-place';
-import { createWaitState, heldWaitRate, NEAR_WINDOW_DAYS, nextLaunchWindow, waitTick } from './wait-pace';
+import { createWaitState, NEAR_WINDOW_DAYS, nextLaunchWindow, waitTick } from './wait-pace';
 
 /** Scene units per display AU. */
 const UNITS_PER_AU = 10;
@@ -287,7 +287,7 @@ function currentRate(): number {
     const rate = waiting ? Math.min(400, 3 * cruise) : cruise;
     return performance.now() - lastBurn < BURN_SLOW_MS ? BURN_SLOW * rate : rate;
   }
-  if (wait.mode !== 'off') return wait.pause > 0 ? 0 : heldWaitRate(params.rate, wait.waited, windowNearness, aimMiss);
+  if (wait.mode !== 'off') return wait.rate;
   if (!Number.isNaN(runTo)) return RUN_RATE;
   return params.rate;
 }
@@ -313,8 +313,8 @@ function stepWorld(world: PhysicsWorld): void {
     // Wait while aiming (./wait-pace.ts waitTick): held, it slows near a launch window and stands
     // at it a moment; a tap's run stops there.
     const w = launchWindow();
-    windowNearness = Math.min(w.next, w.period - w.next);
-    // How near the launch as aimed comes to the target now, in rings: near, the Wait slows.
+    windowNearness = wait.mode === 'run' ? w.next : Math.min(w.next, w.period - w.next);
+    // How near the launch as aimed comes to the target now, in rings: near, the held Wait slows.
     aimMiss = planFlight(world, handles, mission(), aim, waitPlan, WAIT_PLAN_SAMPLES).distance / mission().zone;
     const days = waitTick(wait, TICK, world.time, w, params.rate, aimMiss);
     carry += days;
@@ -441,7 +441,7 @@ function pressWait(): void {
   heldTicks = 0;
   stopPress = phase === 'aim' && wait.mode === 'run';
   if (stopPress) stopWait();
-  else if (phase === 'aim') Object.assign(wait, { mode: 'held', waited: 0, pause: 0 });
+  else if (phase === 'aim') Object.assign(wait, { mode: 'held', waited: 0, pause: 0, rate: 0 });
 }
 /**
  * Lets Wait go: after a tap (shorter than WAIT_TAP_MS or WAIT_TAP_TICKS) while aiming, time runs
@@ -2630,7 +2630,10 @@ function updateStatus(force = false): void {
       ? phase === 'aim'
         ? atTheWindow
           ? `launch window for ${m.target}: aim ahead of it`
-          : 'time waits while you aim'
+          : // The first mission's lesson launches now; from the second on the window is the first step.
+            missionIndex === 0
+            ? 'time waits while you aim'
+            : `time waits: tap ${named('W', 'Wait')} for the next launch window`
         : 'time stopped'
       : `${rate < 10 ? rate.toFixed(1) : Math.round(rate)} days a second${wait.mode === 'off' ? '' : windowNearness < NEAR_WINDOW_DAYS ? ` (near ${m.target}’s window)` : wait.mode === 'run' ? ` (to ${m.target}’s launch window)` : ' (waiting)'}`;
   const dateLine = `${date} · ${clock} · ${stars}`;

@@ -106,29 +106,31 @@ export function nextLaunchWindow(earth: ArrayLike<number>, target: ArrayLike<num
 /**
  * The state of Wait while aiming (`waitTick`): `mode` 'off', 'held' (time runs while it is held) or
  * 'run' (a tap's run to the next launch window); `waited` days run since it began (the ramp);
- * `pause` real seconds still to stand at a window; `lastStop` the world day it last stopped at a
- * window (NaN for none: a window there is not stopped at twice); `stopped` whether the last tick
- * stopped at one (a chime).
+ * `pause` real seconds still to stand at a window; `rate` its pace at the last tick, days per real
+ * second (0 standing); `lastStop` the world day it last stopped at a window (NaN for none: a window
+ * there is not stopped at twice); `stopped` whether the last tick stopped at one (a chime).
  */
 export interface WaitState {
   mode: 'off' | 'held' | 'run';
   waited: number;
   pause: number;
+  rate: number;
   lastStop: number;
   stopped: boolean;
 }
 
 /** A Wait that is off. */
 export function createWaitState(): WaitState {
-  return { mode: 'off', waited: 0, pause: 0, lastStop: Number.NaN, stopped: false };
+  return { mode: 'off', waited: 0, pause: 0, rate: 0, lastStop: Number.NaN, stopped: false };
 }
 
 /**
  * Days a Wait runs time on in a tick of `tick` real seconds (> 0), and its state after: nothing when
  * off or standing at a window; else `heldWaitRate` (the ramp, slow near a window) for the tick, cut
  * at the next launch window. There a held Wait stands for WINDOW_PAUSE_S, then runs on; a tap's run
- * ends. `day` the world day now, `window` the next launch window from now (`nextLaunchWindow`),
- * `aimingRate` and `aimMiss` as heldWaitRate's. @throws RangeError when tick is not > 0.
+ * ends (it slows only for that window, and not for the aim). `day` the world day now, `window` the
+ * next launch window from now (`nextLaunchWindow`), `aimingRate` and `aimMiss` as heldWaitRate's.
+ * @throws RangeError when tick is not > 0.
  */
 export function waitTick(s: WaitState, tick: number, day: number, window: LaunchWindow, aimingRate: number, aimMiss = Infinity): number {
   if (!(tick > 0)) throw new RangeError(`waitTick: tick must be > 0, got ${tick}`);
@@ -136,14 +138,19 @@ export function waitTick(s: WaitState, tick: number, day: number, window: Launch
   if (s.mode === 'off') return 0;
   if (s.pause > 0) {
     s.pause = Math.max(0, s.pause - tick);
+    s.rate = 0;
     return 0;
   }
   // The window just stopped at (within 2 days), or one under 2 days off when the Wait begins (it
   // is the window now), is behind: the next is a synodic period on.
   let next = window.next;
   if (Math.abs(day + next - s.lastStop) < 2 || (s.waited === 0 && next < 2)) next += window.period;
-  const near = Math.min(window.next, window.period - window.next);
-  let days = heldWaitRate(aimingRate, s.waited, near, aimMiss) * tick;
+  // A tap's run slows only for the window ahead, where it stops (not for one just gone by), and not
+  // for the aim: it stops at the window whatever the aim (at AIM_NEAR_RATE a run lasted 20 s).
+  const run = s.mode === 'run';
+  const near = run ? next : Math.min(window.next, window.period - window.next);
+  s.rate = heldWaitRate(aimingRate, s.waited, near, run ? Infinity : aimMiss);
+  let days = s.rate * tick;
   if (days >= next) {
     days = next;
     s.lastStop = day + next;

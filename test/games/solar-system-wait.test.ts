@@ -182,5 +182,17 @@ describe('waitTick: a held Wait stands at every launch window whatever the aim; 
     s.lastStop = Number.NaN;
     while (s.mode === 'run') day += waitTick(s, 1 / 60, day, windowAt(day), 0);
     expect(day).toBeCloseTo(100 + period, 6);
+    // Just past a window, with the aim about to arrive (aimMiss 0), a run starts at WAIT_RATE: it
+    // slows for the window ahead only, and not for the aim (at AIM_NEAR_RATE a run took 20 s); held, it
+    // is slow there.
+    const from = 100 + period + 10;
+    s.mode = 'run';
+    s.waited = 0;
+    waitTick(s, 1 / 60, from, windowAt(from), 0, 0);
+    expect(s.rate).toBe(WAIT_RATE);
+    s.mode = 'held';
+    s.waited = 0;
+    waitTick(s, 1 / 60, from, windowAt(from), 0, 0);
+    expect(s.rate).toBe(AIM_NEAR_RATE);
   });
 });
