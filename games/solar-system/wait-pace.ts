@@ -142,9 +142,11 @@ export function waitTick(s: WaitState, tick: number, day: number, window: Launch
     return 0;
   }
   // The window just stopped at (within 2 days), or one under 2 days off when the Wait begins (it
-  // is the window now), is behind: the next is a synodic period on.
+  // is the window now: kept as stopped at, for the ticks after too), is behind: the next is a
+  // synodic period on.
   let next = window.next;
-  if (Math.abs(day + next - s.lastStop) < 2 || (s.waited === 0 && next < 2)) next += window.period;
+  if (s.waited === 0 && next < 2) s.lastStop = day + next;
+  if (Math.abs(day + next - s.lastStop) < 2) next += window.period;
   // A tap's run slows only for the window ahead, where it stops (not for one just gone by), and not
   // for the aim: it stops at the window whatever the aim (at AIM_NEAR_RATE a run lasted 20 s).
   const run = s.mode === 'run';

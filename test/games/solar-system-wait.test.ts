@@ -176,6 +176,16 @@ describe('waitTick: a held Wait stands at every launch window whatever the aim; 
     expect(day).toBeCloseTo(100, 6);
     expect(s.stopped).toBe(true);
     expect(ticks / 60).toBeLessThan(5);
+    // A Wait begun 0.3 days before a window (the fourth mission's first day) runs past it, also when
+    // a tap's run takes over from the press's first tick (it stopped 0.3 days on).
+    const early = createWaitState();
+    early.mode = 'held';
+    let d = 99.7;
+    d += waitTick(early, 1 / 60, d, windowAt(d), 0);
+    early.mode = 'run';
+    d += waitTick(early, 1 / 60, d, windowAt(d), 0);
+    expect(early.stopped).toBe(false);
+    expect(d).toBeGreaterThan(100.5);
     // Started again right at the window (the one stopped at, or one under 2 days off), it runs to the next.
     s.mode = 'run';
     s.waited = 0;
