@@ -543,6 +543,9 @@ function startMission(index: number): void {
   stopWait();
   wait.lastStop = Number.NaN;
   runToWindow = false;
+  // A mission that begins at a launch window (Mercury's first, 0.3 days on) says so on the date line.
+  const starting = launchWindow();
+  atWindow = starting.next < 1 ? shell.world.time + starting.next : Number.NaN;
   trailCount = 0;
   launches = 0;
   failedTries = 0;
