@@ -314,8 +314,10 @@ function stepWorld(world: PhysicsWorld): void {
     // at it a moment; a tap's run stops there.
     const w = launchWindow();
     windowNearness = wait.mode === 'run' ? w.next : Math.min(w.next, w.period - w.next);
-    // How near the launch as aimed comes to the target now, in rings: near, the held Wait slows.
-    aimMiss = planFlight(world, handles, mission(), aim, waitPlan, WAIT_PLAN_SAMPLES).distance / mission().zone;
+    // How near the launch as aimed comes to the target now, in rings: near, the held Wait slows (a
+    // tap's run and a Wait standing at a window do not read it).
+    if (wait.mode === 'held' && wait.pause === 0)
+      aimMiss = planFlight(world, handles, mission(), aim, waitPlan, WAIT_PLAN_SAMPLES).distance / mission().zone;
     const days = waitTick(wait, TICK, world.time, w, params.rate, aimMiss);
     carry += days;
     if (wait.stopped) {

@@ -611,18 +611,29 @@ describe('projects', () => {
       const slowAt = w.world.time;
       const slow = ten();
       const slowRate = w.rate().days;
-      // On to the window: the ticks it stands there, and the days it runs in 60 ticks after.
-      let k = 0;
-      for (; k < 2000 && w.rate().days > 0; k++) w.step();
+      // On to the window, and Venus's lead on the Earth there.
+      for (let k = 0; k < 2000 && w.rate().days > 0; k++) w.step();
       const stopAt = w.world.time;
       const [vx, , vz] = w.heliocentric('Venus'),
         [ex, , ez] = w.heliocentric('Earth');
       const lead = Math.atan2(vz!, vx!) - Math.atan2(ez!, ex!);
-      let standing = 0;
-      for (; standing < 500 && w.world.time === stopAt; standing++) w.step();
-      const after = ten();
-      return { first, later, slowAt, slow, slowRate, stopAt, lead, standing, after };
+      return { first, later, slowAt, slow, slowRate, stopAt, lead };
     });
+    // Standing there, the date line names the window (the page draws while paused).
+    await g.waitFor(() => /launch window for Venus/.test(document.querySelector('[data-hud="date"]')?.textContent ?? ''), null);
+    // The ticks it stands there, and the days it runs in 10 ticks after.
+    const stand = await g.page.evaluate((stopAt) => {
+      const w = window.game as unknown as { step(): void; world: { time: number } };
+      let standing = 0;
+      for (let k = 0; k < 500; k++) {
+        w.step();
+        if (w.world.time !== stopAt) break;
+        standing++;
+      }
+      const t = w.world.time;
+      for (let k = 0; k < 10; k++) w.step();
+      return { standing, after: w.world.time - t };
+    }, held.stopAt);
     // 40 days a second, 10 ticks of 1/60 s: 6.7 days, and a little more as the ramp starts (+1 day).
     expect(held.first).toBeGreaterThan(6);
     expect(held.first).toBeLessThan(8.7);
@@ -636,38 +647,15 @@ describe('projects', () => {
     // It stops at the window, 60 days after the slowing began (within a tick's days, 2.7), for 90
     // ticks (a tick either way for the steps' rounding), then runs on slowly (at most 15 days a second).
     expect(Math.abs(held.stopAt - held.slowAt - 60)).toBeLessThan(4);
-    expect(Math.abs(held.standing - 90)).toBeLessThanOrEqual(2);
-    expect(held.after).toBeGreaterThan(0);
-    expect(held.after).toBeLessThan(3.6);
+    expect(Math.abs(stand.standing - 90)).toBeLessThanOrEqual(2);
+    expect(stand.after).toBeGreaterThan(0);
+    expect(stand.after).toBeLessThan(3.6);
     await g.page.keyboard.up('w');
-    const leadAngle = () =>
-      g.page.evaluate(() => {
-        const w = window.game as unknown as { heliocentric(name: string): number[] };
-        const [vx, , vz] = w.heliocentric('Venus'),
-          [ex, , ez] = w.heliocentric('Earth');
-        return Math.atan2(vz!, vx!) - Math.atan2(ez!, ex!);
-      });
-    const wrap = (a: number) => (((a * 180) / Math.PI + 540) % 360) - 180;
-    // The test hook runs time to the next window and stops there: the day it stopped at.
-    const runToWindow = () =>
-      g.page.evaluate(() => {
-        const w = window.game as unknown as { step(): void; waitForWindow(): void; world: { time: number } };
-        w.waitForWindow();
-        let last = Number.NaN;
-        for (let k = 0; k < 5000 && last !== w.world.time; k++) {
-          last = w.world.time;
-          w.step();
-        }
-        return w.world.time;
-      });
-    // From just past the window the held Wait stopped at, the hook runs to the next one, a synodic
-    // period on (583.9 days), at the same angle as the held Wait's window.
-    const nextWindow = await runToWindow();
-    await g.waitFor(() => /launch window for Venus/.test(document.querySelector('[data-hud="date"]')?.textContent ?? ''), null);
-    expect(Math.abs(nextWindow - held.stopAt - 583.9)).toBeLessThan(25);
-    const lead1 = wrap(held.lead);
-    const lead2 = wrap(await leadAngle());
-    for (const lead of [lead1, lead2]) expect(Math.abs(Math.abs(lead) - 54)).toBeLessThan(6);
+    // At the window Venus leads the Earth by the Hohmann transfer's angle, 54 degrees (within 6: the
+    // page's window is worked out on circular orbits at their mean pace; the windows' period, 583.9
+    // days, is checked by the node tests, test/games/solar-system-wait.test.ts).
+    const lead = (((held.lead * 180) / Math.PI + 540) % 360) - 180;
+    expect(Math.abs(Math.abs(lead) - 54)).toBeLessThan(6);
     expect(g.errors).toEqual([]);
     await g.close();
   });
