@@ -23,9 +23,10 @@
  * speed plus the burns; 3 stars want a good moment) and a score (./missions.ts missionScore: cheap,
  * quick, and at the first launch) shown
  * on a result card with the best so far, every mission's stars and the next mission's brief.
- * Waiting lets the planets line up (./wait-pace.ts): held, Wait (W) runs time, slowing near a launch
- * window (the Hohmann transfer's phase angle) but not stopping there, so the player picks the day
- * by watching the dots meet; a tap runs 10 days on. The Hint button (H) says
+ * Waiting lets the planets line up (./wait-pace.ts): a tap of Wait (W) runs time to the next launch
+ * window (the Hohmann transfer's phase angle) and stops there; held, it runs time, slowing near a
+ * window and standing at it a moment, so the player picks the day by watching the dots meet (a
+ * phone's finger taps: at 10 days a tap a window took 170 taps). The Hint button (H) says
  * how to read the map before a failed try, then which way to change the launch and what to watch
  * (./advice.ts finds the change), or in flight which burn arrives and how many presses it takes.
  *
@@ -39,7 +40,7 @@
  * of the mission's step (./missions.ts missionTimeStep: the chosen step, longer for the outer
  * planets), at most MAX_STEPS_PER_TICK of them (a faster rate then runs slower than asked).
  * Keys: ← → turn the launch, ↑ ↓ its speed (in flight: burns in / out, faster / slower), Space
- * launch, W wait (held: time runs, slow near a launch window; tap: 10 days on), H hint, Enter next mission or try again, T try again, [ ] slower / faster, D distances,
+ * launch, W wait (tap: time runs to the next launch window; held: time runs, stopping a moment at each window), H hint, Enter next mission or try again, T try again, [ ] slower / faster, D distances,
  * 1 2 3 views, E sizes, P pause, N single step, R restart the mission (its first date and starting
  * launch; T keeps the last launch).
  * URL: ?mission=1..7, ?verdict=1 (the verdict from the start), ?rate=days-per-second while aiming (0..400, default 0),
@@ -111,7 +112,7 @@ import { adviseAim, adviseBurn, createAimAdvice, createBurnAdvice, SPEED_STEP, s
 import { displayRadius, toDisplay } from './distance-scale';
 import { copyForecast, createForecast, ForecastJob } from './forecast';
 import { keplerState } from './kepler';
-import { meetingWords } from './meeting-words';
+import { forecastWords, meetingWords } from './meeting-words';
 import {
   type Aim,
   BURN_STEP,
@@ -141,7 +142,7 @@ import {
 } from './missions';
 import { meetingPoint, orbitCrossings, orbitRadiusToward, orbitReach, pathDay, targetLag } from './orbit-crossing';
 import { type TagBox, tagPlace } from './tag-place';
-import { heldWaitRate, NEAR_WINDOW_DAYS, nextLaunchWindow, WAIT_TAP_DAYS } from './wait-pace';
+import { createWaitState, NEAR_WINDOW_DAYS, nextLaunchWindow, waitTick } from './wait-pace';
 
 /** Scene units per display AU. */
 const UNITS_PER_AU = 10;
@@ -152,9 +153,9 @@ const STEPS = ['0.25', '1', '6', '24'] as const;
  * needs more runs slower than asked, the steps staying the forecast's.
  */
 const MAX_STEPS_PER_TICK = 128;
-/** Days per real second of a tapped Wait (WAIT_TAP_DAYS on) or of a run to the launch window (the test hook). */
+/** Days per real second of a run to the launch window (the test hook). */
 const RUN_RATE = 160;
-/** A press of Wait (W or the button) shorter than this, ms, is a tap: time runs WAIT_TAP_DAYS on. */
+/** A press of Wait (W or the button) shorter than this, ms, is a tap: time runs on to the next launch window. */
 const WAIT_TAP_MS = 250;
 /**
  * Real time forecasting may take a frame, ms (in slices of FORECAST_SLICE steps), or a third of the
@@ -269,10 +270,10 @@ function targetDistance(): number {
 }
 
 /**
- * Days per real second now: the aiming rate (./wait-pace.ts heldWaitRate while Wait is held:
- * ramping up with the days waited, slow near a launch window, slower still while the aim nearly
- * arrives), RUN_RATE while a tapped Wait runs
- * its days, a flight's rate (3 times it in the cruise far from the target, 3 times that while held,
+ * Days per real second now: the aiming rate (./wait-pace.ts heldWaitRate while Wait is held or
+ * a tap's run goes on: ramping up with the days waited, slow near a launch window, slower still
+ * while the aim nearly arrives; none while it stands at a window), RUN_RATE while the test hook
+ * runs to a window, a flight's rate (3 times it in the cruise far from the target, 3 times that while held,
  * at most 400; BURN_SLOW of it just after a burn), nothing after a flight ends.
  */
 function currentRate(): number {
@@ -286,10 +287,9 @@ function currentRate(): number {
     const rate = waiting ? Math.min(400, 3 * cruise) : cruise;
     return performance.now() - lastBurn < BURN_SLOW_MS ? BURN_SLOW * rate : rate;
   }
-  if (!Number.isNaN(runTo) && !waiting) return RUN_RATE;
-  if (!waiting) return params.rate;
-  const waited = Number.isNaN(waitFrom) ? 0 : Math.max(0, shell.world.time - waitFrom);
-  return heldWaitRate(params.rate, waited, windowNearness, aimMiss);
+  if (wait.mode !== 'off') return wait.rate;
+  if (!Number.isNaN(runTo)) return RUN_RATE;
+  return params.rate;
 }
 
 /** The chosen step, days (the panel's "longest step"). */
@@ -301,20 +301,30 @@ const baseStep = (): number => Number(params.step) / 24;
  * next forecast too), at most MAX_STEPS_PER_TICK; during a flight the probe is checked after every step.
  */
 function stepWorld(world: PhysicsWorld): void {
-  // The wait's ramp counts from the first step with Wait held, while aiming; held, it slows near
-  // a launch window (windowNearness) but never stops there: the player picks the day.
-  if (!(waiting && phase === 'aim')) waitFrom = Number.NaN;
-  else {
-    if (Number.isNaN(waitFrom)) waitFrom = world.time;
-    const w = launchWindow();
-    windowNearness = Math.min(w.next, w.period - w.next);
-    // How near the launch as aimed comes to the target now, in rings: near, the held Wait slows.
-    aimMiss = planFlight(world, handles, mission(), aim, waitPlan, WAIT_PLAN_SAMPLES).distance / mission().zone;
+  if (phase !== 'aim') {
+    runTo = Number.NaN;
+    wait.mode = 'off';
   }
-  if (phase !== 'aim') runTo = Number.NaN;
   if (phase === 'flight') flightTicks++;
+  if (waiting) heldTicks++;
   const dt = flight && phase === 'flight' ? flight.dt : missionTimeStep(mission(), baseStep());
-  carry += currentRate() * TICK;
+  if (wait.mode === 'off') carry += currentRate() * TICK;
+  else {
+    // Wait while aiming (./wait-pace.ts waitTick): held, it slows near a launch window and stands
+    // at it a moment; a tap's run stops there.
+    const w = launchWindow();
+    windowNearness = wait.mode === 'run' ? w.next : Math.min(w.next, w.period - w.next);
+    // How near the launch as aimed comes to the target now, in rings: near, the held Wait slows (a
+    // tap's run and a Wait standing at a window do not read it).
+    if (wait.mode === 'held' && wait.pause === 0)
+      aimMiss = planFlight(world, handles, mission(), aim, waitPlan, WAIT_PLAN_SAMPLES).distance / mission().zone;
+    const days = waitTick(wait, TICK, world.time, w, params.rate, aimMiss);
+    carry += days;
+    if (wait.stopped) {
+      atWindow = world.time + days;
+      sound.chime(988, 0.15);
+    }
+  }
   if (phase === 'aim' && !Number.isNaN(runTo)) {
     carry = Math.min(carry, Math.max(0, runTo - world.time));
     // Within a step of the end: stop here (a whole step more would pass it).
@@ -395,48 +405,74 @@ let launchMs = 0;
 let flightDaysPerSecond = 30;
 /** Whether Wait (W or the button) is held. */
 let waiting = false;
-/** World time, days, Wait began to be held while aiming (its ramp counts from there); NaN while it is not. */
-let waitFrom = Number.NaN;
-/** World time, days, a tapped Wait (or the test hook's run to the window) runs time to and stops at; NaN for none. */
+/** Wait while aiming: held, a tap's run to the next launch window, or off (./wait-pace.ts waitTick). */
+const wait = createWaitState();
+/** Whether the press of Wait under way stopped a tap's run (its release then starts nothing). */
+let stopPress = false;
+/** Loop ticks run since Wait was last pressed: under WAIT_TAP_TICKS of them the press is a tap too. */
+let heldTicks = 0;
+/**
+ * A press of Wait that ran fewer loop ticks than this (a quarter second of game time) is a tap,
+ * however long it took by the clock (a loaded machine or a paused game runs few ticks).
+ */
+const WAIT_TAP_TICKS = 15;
+/** World time, days, the test hook's run to the window runs time to and stops at; NaN for none. */
 let runTo = Number.NaN;
 /** Whether runTo is a launch window (the hook's run): the date line then names it. */
 let runToWindow = false;
-/** Days from now to the nearest launch window, worked out each tick while Wait is held (Infinity otherwise). */
+/** Days from now to the nearest launch window, worked out each tick while Wait runs (Infinity otherwise). */
 let windowNearness = Number.POSITIVE_INFINITY;
-/** The launch as aimed misses the target by, arrival rings (the quick Kepler plan), worked out each tick while Wait is held. */
+/** The launch as aimed misses the target by, arrival rings (the quick Kepler plan), worked out each tick while Wait runs. */
 let aimMiss = Number.POSITIVE_INFINITY;
 /** The plan `aimMiss` is read from, and its samples (a quick look each tick: about 1 ms). */
 const waitPlan = createFlightPlan();
 const WAIT_PLAN_SAMPLES = 100;
 /** World time, days, a run last stopped at a launch window (NaN for none): the date line says so. */
 let atWindow = Number.NaN;
-/** performance.now() Wait was last pressed (a short press is a tap: WAIT_TAP_DAYS on). */
+/** performance.now() Wait was last pressed (a short press is a tap: a run to the next window). */
 let waitPressedAt = -Infinity;
 
-/** Presses Wait (W or the button): time runs while it is held. */
+/**
+ * Presses Wait (W or the button): while aiming, time runs while it is held; a press while a tap's
+ * run goes on stops the run there.
+ */
 function pressWait(): void {
   if (waiting) return;
   waiting = true;
   waitPressedAt = performance.now();
+  heldTicks = 0;
+  stopPress = phase === 'aim' && wait.mode === 'run';
+  if (stopPress) stopWait();
+  else if (phase === 'aim') Object.assign(wait, { mode: 'held', waited: 0, pause: 0, rate: 0 });
 }
-/** Lets Wait go: after a tap (shorter than WAIT_TAP_MS) while aiming, time runs WAIT_TAP_DAYS on. */
+/**
+ * Lets Wait go: after a tap (shorter than WAIT_TAP_MS or WAIT_TAP_TICKS) while aiming, time runs
+ * on to the next launch window and stops there (unless the tap itself stopped at one); after a hold
+ * it stops.
+ */
 function releaseWait(): void {
   if (!waiting) return;
   waiting = false;
+  if (stopPress || wait.mode !== 'held') return;
+  const tap = performance.now() - waitPressedAt < WAIT_TAP_MS || heldTicks < WAIT_TAP_TICKS;
+  if (tap && wait.pause === 0) wait.mode = 'run';
+  else stopWait();
+}
+/** Stops Wait's time (a hold's or a tap's run). */
+function stopWait(): void {
+  wait.mode = 'off';
+  wait.pause = 0;
   windowNearness = Number.POSITIVE_INFINITY;
   aimMiss = Number.POSITIVE_INFINITY;
-  if (phase === 'aim' && performance.now() - waitPressedAt < WAIT_TAP_MS) {
-    runTo = shell.world.time + WAIT_TAP_DAYS;
-    runToWindow = false;
-  }
 }
 /**
  * Runs time (RUN_RATE) to the next launch window of the mission's target and stops there (a window
  * less than 2 days off counts as now: the next one). For tests and the console: the player's Wait
- * never jumps to the window (./wait-pace.ts). No effect unless aiming.
+ * (a tap) runs there at its own pace (./wait-pace.ts). No effect unless aiming.
  */
 function waitForWindow(): void {
   if (phase !== 'aim') return;
+  stopWait();
   const w = launchWindow();
   runTo = shell.world.time + (w.next < 2 ? w.next + w.period : w.next);
   runToWindow = true;
@@ -506,7 +542,12 @@ function startMission(index: number): void {
   phase = 'aim';
   // A tapped Wait's run ends with the mission it ran in: left set, a restart (R) ran on from day 0.
   runTo = Number.NaN;
+  stopWait();
+  wait.lastStop = Number.NaN;
   runToWindow = false;
+  // A mission that begins at a launch window (Mercury's first, 0.3 days on) says so on the date line.
+  const starting = launchWindow();
+  atWindow = starting.next < 1 ? shell.world.time + starting.next : Number.NaN;
   trailCount = 0;
   launches = 0;
   failedTries = 0;
@@ -801,7 +842,12 @@ const game = await startThreeGame({
     { keys: '← →', action: 'turn the launch arrow; in flight, burn in / out', touch: 'bottom ↺ ↻ buttons', card: false },
     { keys: '↑ ↓', action: 'launch speed; in flight, burn faster / slower', touch: '− + buttons', card: false },
     { keys: 'Space', action: 'launch the probe', touch: 'Launch button', card: false },
-    { keys: 'W', action: 'wait: hold to run time (slow near a launch window); tap for 10 days', touch: 'Wait button', card: false },
+    {
+      keys: 'W',
+      action: 'wait: tap to run to the next launch window; hold to run time (it stops at each window)',
+      touch: 'Wait button',
+      card: false,
+    },
     { keys: 'H', action: 'hint: what to try', touch: 'Hint button', card: false },
     { keys: 'Click', action: 'aim the launch at a point', touch: 'Tap' },
     { keys: 'R', action: 'restart the mission: its first day and launch (T tries the last launch again)', card: false },
@@ -859,6 +905,7 @@ window.addEventListener('keyup', (e) => {
   if (e.key === 'w' || e.key === 'W') releaseWait();
 });
 window.addEventListener('blur', () => {
+  if (waiting && wait.mode === 'held') stopWait();
   waiting = false;
 });
 
@@ -2228,7 +2275,7 @@ const pad = createButtonBar(
     { label: 'Launch', name: 'launch the probe (Space)', onTap: () => playerLaunch() },
     {
       label: 'Wait',
-      name: 'wait: hold to run time, tap for 10 days (W)',
+      name: 'wait: tap to run to the next launch window, hold to run time (W)',
       onPress: () => pressWait(),
       onRelease: () => releaseWait(),
     },
@@ -2289,7 +2336,7 @@ let shownStatus = '';
  * at this date the probe only draws away from it, so the launch date, not the speed, is the trouble.
  */
 function wrongDate(t: SolarSystemBody): string {
-  return `At this date the probe only gets farther from ${t}: hold ${named('W', 'Wait')} until ${t}’s dots end where the probe’s do (time slows near the launch window).`;
+  return `At this date the probe only gets farther from ${t}: tap ${named('W', 'Wait')} to run to the next launch window (or hold it) until ${t}’s dots end where the probe’s do.`;
 }
 
 /** Whether the page is used by touch first (a phone): the hints name the buttons, not the keys. */
@@ -2355,7 +2402,7 @@ function hint(m: Mission): string {
     if (a.kind === 'wait' || a.kind === 'none')
       return forecast.closestAtLaunch
         ? wrongDate(t)
-        : `${ahead} Now it is in the wrong place: hold ${named('W', 'Wait')} until ${t}’s dots end where the probe’s do (time slows near the launch window), then aim.`;
+        : `${ahead} Now it is in the wrong place: tap ${named('W', 'Wait')} to run to the next launch window (or hold it) until ${t}’s dots end where the probe’s do, then aim.`;
   }
   if (phase === 'flight' && flight) {
     if (forecastKey !== wantedKey()) return hintText;
@@ -2475,12 +2522,14 @@ function reading(m: Mission): [string, string] {
  * The reading line's verdict on the meeting at point `i` of the forecast's path (`pathCrossing`),
  * ./meeting-words.ts meetingWords: exact on the first mission (a hit, "✓ Mars will be there" and the
  * stars, else by how many days the target misses the probe there, ./orbit-crossing.ts targetLag),
- * coarse from the second on ("Mars will be close", "a little behind", "far ahead").
+ * coarse from the second on, from the flight's real closest approach ("Mars will be close", "a
+ * little behind", "far ahead": ./meeting-words.ts forecastWords).
  */
 function meetingVerdict(m: Mission, i: number): [string, string] {
+  if (missionIndex > 0) return forecastWords(m.target, forecast, m.zone, crossingTarget);
   const lag = targetLag(forecast, i, crossingTarget, sunMu());
   const arrived = forecast.outcome === 'arrived';
-  return meetingWords(m.target, lag, arrived, missionIndex === 0, starText(starsFor(m, aim.speed)), missWords(forecast.closest, m.zone));
+  return meetingWords(m.target, lag, arrived, starText(starsFor(m, aim.speed)), missWords(forecast.closest, m.zone));
 }
 /** The path's crossings of the target's orbit (`reading`), indices into the forecast's path. */
 const crossingList: number[] = [];
@@ -2586,9 +2635,12 @@ function updateStatus(force = false): void {
       ? phase === 'aim'
         ? atTheWindow
           ? `launch window for ${m.target}: aim ahead of it`
-          : 'time waits while you aim'
+          : // The first mission's lesson launches now; from the second on the window is the first step.
+            missionIndex === 0
+            ? 'time waits while you aim'
+            : `time waits: tap ${named('W', 'Wait')} for the next launch window`
         : 'time stopped'
-      : `${rate < 10 ? rate.toFixed(1) : Math.round(rate)} days a second${waiting ? (windowNearness < NEAR_WINDOW_DAYS ? ` (near ${m.target}’s window)` : ' (waiting)') : ''}`;
+      : `${rate < 10 ? rate.toFixed(1) : Math.round(rate)} days a second${wait.mode === 'off' ? '' : windowNearness < NEAR_WINDOW_DAYS ? ` (near ${m.target}’s window)` : wait.mode === 'run' ? ` (to ${m.target}’s launch window)` : ' (waiting)'}`;
   const dateLine = `${date} · ${clock} · ${stars}`;
   const shownHint = hinting ? hintText : '';
   // In flight, what the four buttons (keys) do then, while there is fuel: they burn.
@@ -2621,7 +2673,10 @@ function updateStatus(force = false): void {
   pad.show(6, phase === 'flight');
   pad.show(7, phase === 'done');
   pad.show(8, phase === 'done' && flight?.state === 'arrived');
-  pad.setActive(5, waiting);
+  // A tap's run shows on the Wait button, which stops it ("Stop").
+  pad.setActive(5, waiting || wait.mode === 'run');
+  const waitLabel = phase === 'aim' && wait.mode === 'run' && !waiting ? 'Stop' : 'Wait';
+  if (pad.buttons[5]!.textContent !== waitLabel) pad.buttons[5]!.textContent = waitLabel;
   pad.setActive(9, hinting);
   pad.buttons[9]!.classList.toggle('ss-pulse', missionIndex === 0 && !hintUsed);
 }

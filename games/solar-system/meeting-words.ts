@@ -1,41 +1,60 @@
 /**
  * The solar system's verdict on a launch's meeting with the target before the mission's first failed
  * try (the page's reading line: "… is at Mars’s orbit on day 222 going out. <verdict>"), DOM-free so
- * Node tests check its wording. On the first mission (the lesson) it is exact: "✓ Mars will be there"
- * or by how many days Mars misses the probe. From the second mission on it is coarse, in bands of days
- * the player must still judge on the map ("Mars will be close", "a little behind", "far ahead"), with
- * no ✓ and in one colour: exact, every mission became "press ↑ until green, hold Wait until ✓". The
- * exact verdict (the ring at arrival) comes back after a failed try.
+ * Node tests check its wording. On the first mission (the lesson) it is exact (`meetingWords`): "✓
+ * Mars will be there" or by how many days Mars misses the probe. From the second mission on it is
+ * coarse (`coarseWords`), in bands of the real flight's closest approach the player must still judge
+ * on the map ("Mars will be close", "a little behind", "far ahead"), with no ✓ and in one colour:
+ * exact, every mission became "press ↑ until green, hold Wait until ✓". The exact verdict (the ring
+ * at arrival) comes back after a failed try.
  */
 
-/** Within this many days of the probe at its meeting point the target is "close" (the coarse verdict). */
-export const CLOSE_DAYS = 25;
-/** Beyond this many days it is "far" behind or ahead; between, "a little". */
-export const FAR_DAYS = 90;
+import type { Forecast } from './forecast';
+import { closestSide } from './orbit-crossing';
 
 /**
- * The verdict and its line class ('ok', 'bad' or, for the coarse words, 'edge'). `target` the
- * target's name; `lag` days the target reaches the probe's meeting point after the probe (negative:
- * before; ./orbit-crossing.ts targetLag); `arrived` whether the forecast arrives; `exact` whether to
- * say it exactly (the first mission); `stars` the stars the launch speed earns, as text; `closest`
- * the words for a near miss within a day ("closest 0.2 AU, 1.4 rings off"). @throws RangeError on a NaN lag.
+ * Within this many arrival rings (the forecast's closest approach over the zone's radius) the target
+ * is "close": an arrival (under 1) or a near miss, so a player who launches on "close" hits or nearly
+ * does (words read from the target's lag where the probe crosses its orbit called misses of 2.8
+ * rings "close", and one of 12 rings "a little ahead"). scripts/solar-system-words.mjs plays it.
  */
-export function meetingWords(
-  target: string,
-  lag: number,
-  arrived: boolean,
-  exact: boolean,
-  stars: string,
-  closest: string,
-): [string, string] {
+export const CLOSE_RINGS = 1.2;
+/** Beyond this many rings it is "far" behind or ahead; between CLOSE_RINGS and it, "a little". */
+export const FAR_RINGS = 5;
+
+/**
+ * The coarse verdict from the second mission on, and its class ('edge': one colour, no ✓): how near
+ * the real flight comes to the target, in bands of `rings` (its closest approach over the zone's
+ * radius, >= 0), and on which side the target is then, `side` (+1: still to come, "behind"; -1: gone
+ * by, "ahead"; ./orbit-crossing.ts closestSide). @throws RangeError on a negative or NaN `rings`.
+ */
+export function coarseWords(target: string, rings: number, side: number): [string, string] {
+  if (!(rings >= 0)) throw new RangeError(`coarseWords: rings must be >= 0, got ${rings}`);
+  if (rings <= CLOSE_RINGS) return [`${target} will be close`, 'edge'];
+  return [`${target} will be ${rings > FAR_RINGS ? 'far' : 'a little'} ${side > 0 ? 'behind' : 'ahead'}`, 'edge'];
+}
+
+/**
+ * The coarse verdict on the launch `forecast` is of (the page's forecast: the flight flown ahead with
+ * the flight's own physics, ./forecast.ts): `coarseWords` of its closest approach to the target over
+ * `zone` (the arrival ring's radius, AU > 0) and the target's side then (`closestSide`, `target` its
+ * heliocentric state now). @throws RangeError when zone is not > 0.
+ */
+export function forecastWords(name: string, forecast: Forecast, zone: number, target: ArrayLike<number>): [string, string] {
+  if (!(zone > 0)) throw new RangeError(`forecastWords: zone must be > 0, got ${zone}`);
+  return coarseWords(name, forecast.closest / zone, closestSide(forecast, target));
+}
+
+/**
+ * The first mission's exact verdict and its line class ('ok' or 'bad'). `target` the target's
+ * name; `lag` days the target reaches the probe's meeting point after the probe (negative: before;
+ * ./orbit-crossing.ts targetLag); `arrived` whether the forecast arrives; `stars` the stars the
+ * launch speed earns, as text; `closest` the words for a near miss within a day ("closest 0.2 AU,
+ * 1.4 rings off"). @throws RangeError on a NaN lag.
+ */
+export function meetingWords(target: string, lag: number, arrived: boolean, stars: string, closest: string): [string, string] {
   if (Number.isNaN(lag)) throw new RangeError('meetingWords: lag must be a number, got NaN');
   const days = Math.round(Math.abs(lag));
-  if (!exact) {
-    // Bands wider than the days that arrive (Mars about 10 either side), so "close" is no ✓.
-    if (days <= CLOSE_DAYS) return [`${target} will be close`, 'edge'];
-    const side = lag > 0 ? 'behind' : 'ahead';
-    return [`${target} will be ${days > FAR_DAYS ? 'far' : 'a little'} ${side}`, 'edge'];
-  }
   if (arrived) return [`✓ ${target} will be there · ${stars}`, 'ok'];
   const n = `${days} day${days === 1 ? '' : 's'}`;
   if (days < 1) return [`✗ misses ${target}: ${closest}`, 'bad'];

@@ -208,3 +208,24 @@ export function targetLag(forecast: Forecast, index: number, target: ArrayLike<n
   }
   return lag;
 }
+
+/**
+ * Which side of the probe the target is at the forecast's closest approach (`forecast.probeAt`,
+ * `forecast.targetAt`): +1 when the target is still to come there (the probe is ahead of it along
+ * the target's motion: the target is "behind", as a positive `targetLag`), -1 when it has gone by
+ * (it is "ahead"). The target's motion there is taken as h x r, h = r x v the normal of its orbit
+ * from `target` (position AU in [0..2], velocity AU/day in [3..5]): along its (near circular) orbit.
+ * @returns +1 or -1 (+1 when the two places coincide).
+ */
+export function closestSide(forecast: Forecast, target: ArrayLike<number>): 1 | -1 {
+  const hx = target[1]! * target[5]! - target[2]! * target[4]!,
+    hy = target[2]! * target[3]! - target[0]! * target[5]!,
+    hz = target[0]! * target[4]! - target[1]! * target[3]!;
+  const [x, y, z] = forecast.targetAt as unknown as [number, number, number];
+  // h x r: the way the target goes round at its place then.
+  const ax = hy * z - hz * y,
+    ay = hz * x - hx * z,
+    az = hx * y - hy * x;
+  const along = (forecast.probeAt[0]! - x) * ax + (forecast.probeAt[1]! - y) * ay + (forecast.probeAt[2]! - z) * az;
+  return along >= 0 ? 1 : -1;
+}

@@ -1,10 +1,11 @@
 /**
  * The pace of the solar system's Wait while aiming (W or the Wait button), DOM-free so Node tests
  * check it. Waiting is how the player picks the launch day: the target's forecast dots move along
- * its orbit as time runs, and the player lets go when they meet the probe's. Wait never stops at the
- * launch window by itself (that gave the day away: a tap then Launch won with no judgement); held,
- * it runs fast across the months between windows and slows near one, so a newcomer can let go on
- * the right day; a tap runs a few days on, to fine-tune the day.
+ * its orbit as time runs, and the player lets go when they meet the probe's. Held, Wait runs fast
+ * across the months between launch windows, slows near one and stops at it for WINDOW_PAUSE_S
+ * whatever the aim (the player is waiting for a window: let go there, or hold on past it); a tap
+ * runs it on at the same pace to the next window and stops there (a phone's finger taps; at 10 days
+ * a tap a window took about 170 of them), or stops a run under way (`waitTick`).
  *
  * Units: days of world time, days per real second.
  */
@@ -37,8 +38,11 @@ export const NEAR_WINDOW_RATE = 15;
 export const AIM_NEAR_RINGS = 1.2;
 export const AIM_NEAR_RATE = 3;
 
-/** Days a tap of Wait runs time on (about a fifth of Mars's arrival window: a fine adjustment). */
-export const WAIT_TAP_DAYS = 10;
+/**
+ * Real seconds a held Wait stops at each launch window before it runs on (slowly: within
+ * NEAR_WINDOW_DAYS of it): long enough to see the date line say so and let go.
+ */
+export const WINDOW_PAUSE_S = 1.5;
 
 /**
  * Days per real second of a held Wait. `aimingRate` the rate time runs at while aiming (days/s,
@@ -97,4 +101,65 @@ export function nextLaunchWindow(earth: ArrayLike<number>, target: ArrayLike<num
   out.next = days;
   out.period = period;
   return out;
+}
+
+/**
+ * The state of Wait while aiming (`waitTick`): `mode` 'off', 'held' (time runs while it is held) or
+ * 'run' (a tap's run to the next launch window); `waited` days run since it began (the ramp);
+ * `pause` real seconds still to stand at a window; `rate` its pace at the last tick, days per real
+ * second (0 standing); `lastStop` the world day it last stopped at a window (NaN for none: a window
+ * there is not stopped at twice); `stopped` whether the last tick stopped at one (a chime).
+ */
+export interface WaitState {
+  mode: 'off' | 'held' | 'run';
+  waited: number;
+  pause: number;
+  rate: number;
+  lastStop: number;
+  stopped: boolean;
+}
+
+/** A Wait that is off. */
+export function createWaitState(): WaitState {
+  return { mode: 'off', waited: 0, pause: 0, rate: 0, lastStop: Number.NaN, stopped: false };
+}
+
+/**
+ * Days a Wait runs time on in a tick of `tick` real seconds (> 0), and its state after: nothing when
+ * off or standing at a window; else `heldWaitRate` (the ramp, slow near a window) for the tick, cut
+ * at the next launch window. There a held Wait stands for WINDOW_PAUSE_S, then runs on; a tap's run
+ * ends (it slows only for that window, and not for the aim). `day` the world day now, `window` the
+ * next launch window from now (`nextLaunchWindow`), `aimingRate` and `aimMiss` as heldWaitRate's.
+ * @throws RangeError when tick is not > 0.
+ */
+export function waitTick(s: WaitState, tick: number, day: number, window: LaunchWindow, aimingRate: number, aimMiss = Infinity): number {
+  if (!(tick > 0)) throw new RangeError(`waitTick: tick must be > 0, got ${tick}`);
+  s.stopped = false;
+  if (s.mode === 'off') return 0;
+  if (s.pause > 0) {
+    s.pause = Math.max(0, s.pause - tick);
+    s.rate = 0;
+    return 0;
+  }
+  // The window just stopped at (within 2 days), or one under 2 days off when the Wait begins (it
+  // is the window now: kept as stopped at, for the ticks after too), is behind: the next is a
+  // synodic period on.
+  let next = window.next;
+  if (s.waited === 0 && next < 2) s.lastStop = day + next;
+  if (Math.abs(day + next - s.lastStop) < 2) next += window.period;
+  // A tap's run slows only for the window ahead, where it stops (not for one just gone by), and not
+  // for the aim: it stops at the window whatever the aim (at AIM_NEAR_RATE a run lasted 20 s).
+  const run = s.mode === 'run';
+  const near = run ? next : Math.min(window.next, window.period - window.next);
+  s.rate = heldWaitRate(aimingRate, s.waited, near, run ? Infinity : aimMiss);
+  let days = s.rate * tick;
+  if (days >= next) {
+    days = next;
+    s.lastStop = day + next;
+    s.stopped = true;
+    if (s.mode === 'held') s.pause = WINDOW_PAUSE_S;
+    else s.mode = 'off';
+  }
+  s.waited += days;
+  return days;
 }

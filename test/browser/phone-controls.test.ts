@@ -1267,7 +1267,7 @@ describe('phone controls', () => {
     await g.close();
   });
 
-  it('solar system: Hint says what to try, + raises the launch speed, Launch sends the probe off, + fast burns in flight, Abort brings it back to the launch', async () => {
+  it('solar system: Hint says what to try, + raises the launch speed, Launch sends the probe off, + fast burns in flight, Abort brings it back to the launch, a tap of Wait runs to the launch window and Stop stops it', async () => {
     const g = await h.openGame('solar-system', { ...PHONE, query: { rate: 0, verdict: 1 } });
     type Solar = {
       mission(): { phase: string; aim: { speed: number }; flight: { elapsed: number; fuelUsed: number } | null; plan: { hit: boolean } };
@@ -1342,6 +1342,24 @@ describe('phone controls', () => {
     await g.page.getByRole('button', { name: 'abort the flight: back to the launch', exact: true }).tap();
     await g.waitFor(() => (window.game as unknown as Solar).mission().phase === 'aim', null);
     expect(await read(g, 'mission().aim.speed')).toBeGreaterThan(speed);
+    // A tap of Wait runs time on to the next launch window (10 days a tap took about 170 taps to
+    // one): the button reads Stop and the date line says where it runs; a tap of Stop stops it.
+    type Rate = { rate(): { days: number } };
+    const waitButton = g.page.locator('[data-pad="wait"]');
+    await waitButton.tap();
+    await g.waitFor(
+      () =>
+        document.querySelector('[data-pad="wait"]')?.textContent === 'Stop' &&
+        /days a second \((to Mars’s launch window|near Mars’s window)\)/.test(
+          document.querySelector('[data-hud="date"]')?.textContent ?? '',
+        ),
+      null,
+    );
+    await waitButton.tap();
+    await g.waitFor(
+      () => document.querySelector('[data-pad="wait"]')?.textContent === 'Wait' && (window.game as unknown as Rate).rate().days === 0,
+      null,
+    );
     expect(g.errors).toEqual([]);
     await g.close();
   });

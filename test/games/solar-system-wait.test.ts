@@ -1,7 +1,8 @@
 /**
- * The solar system's Wait (games/solar-system/wait-pace.ts): it must leave the launch day to the
- * player (a tap then Launch, the recipe strangers used, rarely wins) yet keep the day findable (the
- * days that arrive all lie where a held Wait runs slowly, seconds wide at that pace).
+ * The solar system's Wait (games/solar-system/wait-pace.ts): it keeps the launch day findable (the
+ * days that arrive all lie where a held Wait runs slowly, seconds wide at that pace), a held Wait
+ * stands at every launch window whatever the aim, and a tap runs to the next window (on a phone, 10
+ * days a tap took about 170 taps to a window).
  */
 import { createPhysicsWorld, slotOf } from '@bitphysics/physics';
 import { solarSystem } from '@bitphysics/projects';
@@ -11,6 +12,7 @@ import { createFlightPlan, heliocentricState, MISSIONS, planFlightLater } from '
 import {
   AIM_NEAR_RATE,
   AIM_NEAR_RINGS,
+  createWaitState,
   heldWaitRate,
   NEAR_WINDOW_DAYS,
   NEAR_WINDOW_RATE,
@@ -18,7 +20,8 @@ import {
   WAIT_MAX_GAIN,
   WAIT_RAMP,
   WAIT_RATE,
-  WAIT_TAP_DAYS,
+  WINDOW_PAUSE_S,
+  waitTick,
 } from '../../games/solar-system/wait-pace';
 
 describe('heldWaitRate', () => {
@@ -70,10 +73,6 @@ describe('the launch day is the player’s judgement, findable by watching', () 
       const off = Math.min(phase, window.period - phase);
       expect(off, `day ${d}`).toBeLessThan(NEAR_WINDOW_DAYS);
     }
-    // The stranger's recipe (tap Wait, Launch) from any day of a synodic period: WAIT_TAP_DAYS on,
-    // it wins on under 10 % of the days (it won on all of them when a tap jumped to the window).
-    const share = hits.filter((d) => d >= WAIT_TAP_DAYS && d < WAIT_TAP_DAYS + window.period).length / window.period;
-    expect(share).toBeLessThan(0.1);
   });
 });
 
@@ -125,5 +124,85 @@ describe('a held Wait can be let go inside the days that arrive', () => {
     expect(before).toBeLessThan(5);
     expect(after).toBeGreaterThan(5);
     expect(after).toBeGreaterThan(0.98 * (NEAR_WINDOW_RATE / AIM_NEAR_RATE) * before);
+  });
+});
+
+describe('waitTick: a held Wait stands at every launch window whatever the aim; a tap runs to the next', () => {
+  // Mars's windows on circular orbits: every 780 days, the first 100 days on (a Wait's state sees
+  // only the days to the next one and the period).
+  const period = 780;
+  const windowAt = (day: number) => ({ next: (((100 - day) % period) + period) % period, period });
+  test('held for 40 s from day 0 with the aim far off (aimMiss Infinity): it stops at each window for WINDOW_PAUSE_S', () => {
+    const s = createWaitState();
+    s.mode = 'held';
+    let day = 0;
+    const stops: number[] = [];
+    // Real seconds spent within 2 days of a window, with the stops and with the pace alone (before).
+    let near = 0,
+      nearBefore = 0,
+      dayBefore = 0,
+      waitedBefore = 0;
+    for (let k = 0; k < 40 * 60; k++) {
+      const w = windowAt(day);
+      if (Math.min(w.next, period - w.next) < 2) near += 1 / 60;
+      day += waitTick(s, 1 / 60, day, w, 0);
+      if (s.stopped) stops.push(day);
+      const b = windowAt(dayBefore);
+      const off = Math.min(b.next, period - b.next);
+      if (off < 2) nearBefore += 1 / 60;
+      const d = (heldWaitRate(0, waitedBefore, off) * 1) / 60;
+      dayBefore += d;
+      waitedBefore += d;
+    }
+    // Every window passed is stopped at, on its day (the tick cuts at it: exact but for rounding).
+    expect(stops.length).toBeGreaterThanOrEqual(3);
+    for (const [i, d] of stops.entries()) expect(d).toBeCloseTo(100 + i * period, 6);
+    // Measured: 0.27 s within 2 days of each window before (15 days a second), 1.78 s with the stop.
+    expect(nearBefore / stops.length).toBeLessThan(0.5);
+    expect(near / stops.length).toBeGreaterThan(WINDOW_PAUSE_S);
+    expect(() => waitTick(s, 0, 0, windowAt(0), 0)).toThrow(/tick must be > 0/);
+  });
+  test('a tap’s run goes on to the next window and stops there; from a window, to the one after', () => {
+    const s = createWaitState();
+    let day = 0;
+    s.mode = 'run';
+    let ticks = 0;
+    while (s.mode === 'run' && ticks < 10_000) {
+      day += waitTick(s, 1 / 60, day, windowAt(day), 0);
+      ticks++;
+    }
+    // One tap where 10 days a tap took 10: to Mars's next window from the page's start (about 170
+    // days in 2012), 17 taps of 10 days, and at most 78 in a synodic period.
+    expect(day).toBeCloseTo(100, 6);
+    expect(s.stopped).toBe(true);
+    expect(ticks / 60).toBeLessThan(5);
+    // A Wait begun 0.3 days before a window (the fourth mission's first day) runs past it, also when
+    // a tap's run takes over from the press's first tick (it stopped 0.3 days on).
+    const early = createWaitState();
+    early.mode = 'held';
+    let d = 99.7;
+    d += waitTick(early, 1 / 60, d, windowAt(d), 0);
+    early.mode = 'run';
+    d += waitTick(early, 1 / 60, d, windowAt(d), 0);
+    expect(early.stopped).toBe(false);
+    expect(d).toBeGreaterThan(100.5);
+    // Started again right at the window (the one stopped at, or one under 2 days off), it runs to the next.
+    s.mode = 'run';
+    s.waited = 0;
+    s.lastStop = Number.NaN;
+    while (s.mode === 'run') day += waitTick(s, 1 / 60, day, windowAt(day), 0);
+    expect(day).toBeCloseTo(100 + period, 6);
+    // Just past a window, with the aim about to arrive (aimMiss 0), a run starts at WAIT_RATE: it
+    // slows for the window ahead only, and not for the aim (at AIM_NEAR_RATE a run took 20 s); held, it
+    // is slow there.
+    const from = 100 + period + 10;
+    s.mode = 'run';
+    s.waited = 0;
+    waitTick(s, 1 / 60, from, windowAt(from), 0, 0);
+    expect(s.rate).toBe(WAIT_RATE);
+    s.mode = 'held';
+    s.waited = 0;
+    waitTick(s, 1 / 60, from, windowAt(from), 0, 0);
+    expect(s.rate).toBe(AIM_NEAR_RATE);
   });
 });
