@@ -4,7 +4,6 @@
  * says when.
  */
 
-import type { awaitBlocks, claimBlock } from '../threads/block-claim.js';
 import type { KernelArray, KernelHelper } from '../threads/kernel-types.js';
 import {
   BS2_DX,
@@ -37,7 +36,7 @@ import {
 import * as APPROACH from './slots/approach.js';
 import * as PLAN from './slots/colored-plan.js';
 import * as SOLVE from './slots/colored-solve.js';
-import type { approachSpeeds } from './stages-kernel.js';
+import type { approachSpeeds, runUnitBlocks, UnitBlocks } from './stages-kernel.js';
 
 /**
  * Thread kernel (step/kernel-table.ts rules: self-contained) of the coloured substeps, run by every
@@ -143,18 +142,46 @@ export function solveColored2D(
   // thread solves the same strips pass after pass, their bodies and rows in its core's cache.
   const claim = A[SOLVE.CLAIM] as Int32Array,
     threads = plan[PLAN.THREADS]! > 0 ? plan[PLAN.THREADS]! : 1;
-  const claimNext = H[9] as typeof claimBlock,
-    awaitUnit = H[16] as typeof awaitBlocks,
-    cursor = new Int32Array(2);
+  const unit: UnitBlocks = { claim, bar, part, threads, wait, spinMs, cursor: new Int32Array(2), H };
+  const runUnit = H[20] as typeof runUnitBlocks;
   let base = 0,
     failed = false;
   let stage = 0,
     u = 0;
+  // Which unit runs: kind 0 pack, 5 approach speeds, 1 gravity, 2 positions, 3 a colour's rows (from
+  // block `first` of the block table), 4 unpack.
+  let kind = 0,
+    first = 0;
+  const block = (blk: number): void => {
+    if (kind === 0) packRows(A, P, blk, parts);
+    else if (kind === 5) approachRows(A, approachParams, null, blk * APPROACH_ROWS, Math.min(rows, (blk + 1) * APPROACH_ROWS));
+    else if (kind === 1 || kind === 2) {
+      const k0 = 1 + blk * BB,
+        k1 = Math.min(nb, k0 + BB);
+      bodyStage(sb, ex, dyn, order, 0, k0, k1, kind === 1 ? 1 : 2, P);
+    } else if (kind === 4) {
+      const k0 = blk * RB_,
+        k1 = Math.min(np, k0 + RB_);
+      unpackRows(A, k0, k1);
+    } else {
+      // A block of colour u's rows.
+      const r0 = bounds[first + blk]!,
+        r1 = bounds[first + blk + 1]!;
+      // Strips: colour 0's block runs its bodies' stage first (gravity before the warm start,
+      // positions before the first relax pass).
+      if (fused && u === 0 && (stage === 1 || (stage === 3 + iters && relax > 0))) {
+        bodyStage(sb, ex, dyn, order, 1, bodyBounds[blk]!, bodyBounds[blk + 1]!, stage === 1 ? 1 : 2, P);
+      }
+      // Warm start (mode 0), or a pass: 1 relax, 3 biased, + 4 on the substep's last pass (it
+      // adds each row's impulse to what the substep delivered).
+      const last = relax === 0 ? stage === 1 + iters : stage === stages - 1;
+      const mode = stage === 1 ? 0 : (stage < 2 + iters ? 3 : 1) + (last ? 4 : 0);
+      rowPass(pk, sb, pair, tot, P, r0, r1, mode);
+    }
+  };
   for (let g = 0; g < units; g++) {
-    // Which unit g is: kind 0 pack, 5 approach speeds, 1 gravity, 2 positions, 3 a colour's rows, 4 unpack.
-    let kind: number,
-      first = 0,
-      count: number;
+    let count: number;
+    first = 0;
     if (g === 0) {
       kind = 0;
       count = parts;
@@ -175,54 +202,9 @@ export function solveColored2D(
       }
     }
     const end = base + count;
-    if (count > 0) {
-      // Wait until every block of the earlier units is done: spin a while, then block.
-      if (!awaitUnit(bar, base, wait, spinMs)) {
-        failed = true;
-        break;
-      }
-      cursor[0] = 0;
-      cursor[1] = 0;
-      for (
-        let blk = claimNext(claim, base, count, part, threads, cursor);
-        blk >= 0;
-        blk = claimNext(claim, base, count, part, threads, cursor)
-      ) {
-        try {
-          if (kind === 0) packRows(A, P, blk, parts);
-          else if (kind === 5) approachRows(A, approachParams, null, blk * APPROACH_ROWS, Math.min(rows, (blk + 1) * APPROACH_ROWS));
-          else if (kind === 1 || kind === 2) {
-            const k0 = 1 + blk * BB,
-              k1 = Math.min(nb, k0 + BB);
-            bodyStage(sb, ex, dyn, order, 0, k0, k1, kind === 1 ? 1 : 2, P);
-          } else if (kind === 4) {
-            const k0 = blk * RB_,
-              k1 = Math.min(np, k0 + RB_);
-            unpackRows(A, k0, k1);
-          } else {
-            // A block of colour u's rows.
-            const r0 = bounds[first + blk]!,
-              r1 = bounds[first + blk + 1]!;
-            // Strips: colour 0's block runs its bodies' stage first (gravity before the warm start,
-            // positions before the first relax pass).
-            if (fused && u === 0 && (stage === 1 || (stage === 3 + iters && relax > 0))) {
-              bodyStage(sb, ex, dyn, order, 1, bodyBounds[blk]!, bodyBounds[blk + 1]!, stage === 1 ? 1 : 2, P);
-            }
-            // Warm start (mode 0), or a pass: 1 relax, 3 biased, + 4 on the substep's last pass (it
-            // adds each row's impulse to what the substep delivered).
-            const last = relax === 0 ? stage === 1 + iters : stage === stages - 1;
-            const mode = stage === 1 ? 0 : (stage < 2 + iters ? 3 : 1) + (last ? 4 : 0);
-            rowPass(pk, sb, pair, tot, P, r0, r1, mode);
-          }
-        } catch (e) {
-          // Let the other threads out of their waits, then report this one's error.
-          Atomics.store(bar, 2, 1);
-          Atomics.notify(bar, 1);
-          throw e;
-        }
-        // Done: the last block of a unit wakes the threads waiting to start the next.
-        if (Atomics.add(bar, 1, 1) + 1 === end) Atomics.notify(bar, 1);
-      }
+    if (count > 0 && !runUnit(unit, base, count, block)) {
+      failed = true;
+      break;
     }
     base = end;
     // Next unit: advance (stage, colour, substep) past the packing and the approach speeds.

@@ -435,54 +435,91 @@ export function restitutionColored(
   // bodies, it solved in the substeps.
   const claim = A[RESTITUTION.CLAIM] as Int32Array,
     threads = plan[PLAN.THREADS]! > 0 ? plan[PLAN.THREADS]! : 1;
-  const claimNext = H[9] as typeof claimBlock,
-    awaitUnit = H[16] as typeof awaitBlocks,
-    cursor = new Int32Array(2);
+  const unit: UnitBlocks = { claim, bar, part, threads, wait, spinMs, cursor: new Int32Array(2), H };
+  // The block loops are kernel helpers (KERNEL_HELPERS 7 and 8, solver/kernel-helpers.ts): this kernel
+  // runs once a step, and inline they were compiled on the stack partway through a call.
+  let c = -1,
+    first = 0;
+  const block = (blk: number): void => {
+    if (c < 0) {
+      const lo = blk * FIRST,
+        hi = Math.min(n, lo + FIRST);
+      const bouncing = (H[7] as typeof restitutionTargets)(A, P, lo, hi, H);
+      if (bouncing > 0) Atomics.add(bar, 3, bouncing);
+    } else (H[8] as typeof restitutionRows)(A, P, bounds[first + blk]!, bounds[first + blk + 1]!);
+  };
   for (let u = 0; u < units; u++) {
-    const c = u === 0 ? -1 : (u - 1) % (C + 1);
-    const first = c < 0 ? 0 : plan[PLAN.COLOR_BLOCKS + c]!;
+    c = u === 0 ? -1 : (u - 1) % (C + 1);
+    first = c < 0 ? 0 : plan[PLAN.COLOR_BLOCKS + c]!;
     const count = c < 0 ? Math.ceil(n / FIRST) : plan[PLAN.COLOR_BLOCKS + c + 1]! - first;
-    const end = base + count;
     // From unit 1 on: nothing to do unless some row bounces (known once unit 0 is done).
     if (u === 1) {
-      if (!awaitUnit(bar, base, wait, spinMs)) {
+      if (!(H[16] as typeof awaitBlocks)(bar, base, wait, spinMs)) {
         failed = true;
         break;
       }
       if (Atomics.load(bar, 3) === 0) break;
     }
-    if (count > 0) {
-      if (!awaitUnit(bar, base, wait, spinMs)) {
-        failed = true;
-        break;
-      }
-      cursor[0] = 0;
-      cursor[1] = 0;
-      for (
-        let blk = claimNext(claim, base, count, part, threads, cursor);
-        blk >= 0;
-        blk = claimNext(claim, base, count, part, threads, cursor)
-      ) {
-        try {
-          // The block loops are kernel helpers (KERNEL_HELPERS 7 and 8, solver/kernel-helpers.ts): this kernel
-          // runs once a step, and inline they were compiled on the stack partway through a call.
-          if (c < 0) {
-            const lo = blk * FIRST,
-              hi = Math.min(n, lo + FIRST);
-            const bouncing = (H[7] as typeof restitutionTargets)(A, P, lo, hi, H);
-            if (bouncing > 0) Atomics.add(bar, 3, bouncing);
-          } else (H[8] as typeof restitutionRows)(A, P, bounds[first + blk]!, bounds[first + blk + 1]!);
-        } catch (e) {
-          Atomics.store(bar, 2, 1);
-          Atomics.notify(bar, 1);
-          throw e;
-        }
-        if (Atomics.add(bar, 1, 1) + 1 === end) Atomics.notify(bar, 1);
-      }
+    if (count > 0 && !(H[20] as typeof runUnitBlocks)(unit, base, count, block)) {
+      failed = true;
+      break;
     }
-    base = end;
+    base += count;
   }
   return failed ? -1 : 0;
+}
+
+/**
+ * What runUnitBlocks needs of a block-claimed kernel's call (solveColored2D, restitutionColored), made once
+ * a call: the claim flags and counters (`bar`: [1] blocks done, [2] a thread failed), this thread's
+ * `part` of `threads`, whether it may block and how long it spins first, its claim cursor, the kernel helpers.
+ */
+export interface UnitBlocks {
+  claim: Int32Array;
+  bar: Int32Array;
+  part: number;
+  threads: number;
+  wait: boolean;
+  spinMs: number;
+  cursor: Int32Array;
+  H: readonly KernelHelper[];
+}
+
+/**
+ * This thread's share of one unit of a block-claimed kernel (KERNEL_HELPERS 20): waits until every block of
+ * the earlier units is done (`base` blocks, threads/block-claim.ts awaitBlocks, KERNEL_HELPERS 16), then
+ * claims the unit's `count` blocks one by one (claimBlock, KERNEL_HELPERS 9) and runs `block` on each,
+ * counting it done in bar[1]; the unit's last block wakes the threads waiting to start the next. If
+ * `block` throws, lets the other threads out of their waits (bar[2] = 1) and throws again. Returns false
+ * if another thread failed (the caller stops).
+ * @category Threads
+ */
+export function runUnitBlocks(run: UnitBlocks, base: number, count: number, block: (blk: number) => void): boolean {
+  const claim = run.claim,
+    bar = run.bar,
+    part = run.part,
+    threads = run.threads,
+    cursor = run.cursor;
+  const claimNext = run.H[9] as typeof claimBlock;
+  if (!(run.H[16] as typeof awaitBlocks)(bar, base, run.wait, run.spinMs)) return false;
+  const end = base + count;
+  cursor[0] = 0;
+  cursor[1] = 0;
+  for (
+    let blk = claimNext(claim, base, count, part, threads, cursor);
+    blk >= 0;
+    blk = claimNext(claim, base, count, part, threads, cursor)
+  ) {
+    try {
+      block(blk);
+    } catch (e) {
+      Atomics.store(bar, 2, 1);
+      Atomics.notify(bar, 1);
+      throw e;
+    }
+    if (Atomics.add(bar, 1, 1) + 1 === end) Atomics.notify(bar, 1);
+  }
+  return true;
 }
 
 /**
