@@ -25,7 +25,7 @@ import {
   BX_STRIDE,
   IMPACT_STRIDE,
 } from './body-state-layout.js';
-import { gravitySign } from './impact-motion.js';
+import { ballMotion, faceMotion, motionIO } from './impact-motion.js';
 import { impactScalars, markChanged, sweepIO } from './impact-state.js';
 
 /** One impact of the impact stage (solver/impacts.ts): a contact's state at its time of impact (swept), and the impulse that stops or bounces it. */
@@ -56,106 +56,78 @@ const hit = new Float64Array(5);
  * into `hit` and returns true if the bodies touch within the step while approaching.
  */
 export function contactState(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number): boolean {
-  const cs = world.collision;
-  const c = world.components;
-  const sb = cs.bodyState,
-    imp = cs.bodyImpact,
-    type = cs.bodyType;
-  const h = world.h;
-  const ia = buf.ia[i]!,
-    ib = buf.ib[i]!;
-  const oa = ia * S,
-    ob = ib * S,
-    qa = ia * IMPACT_STRIDE,
-    qb = ib * IMPACT_STRIDE;
-  const a = buf.a[i]!,
-    b = buf.b[i]!,
-    kind = buf.kind[i]!;
-  const is2D = S === BS2_STRIDE;
-  const g = world.gravity;
-  const gr = gravitySign(type, a, b);
-  const ax = gr * g[0]!,
-    ay = gr * g[1]!,
-    az = is2D ? 0 : gr * g[2]!;
-  const wx = sb[ob + BS2_VX]! - sb[oa + BS2_VX]!,
-    wy = sb[ob + BS2_VY]! - sb[oa + BS2_VY]!,
-    wz = is2D ? 0 : sb[ob + BS3_VZ]! - sb[oa + BS3_VZ]!;
+  const imp = world.collision.bodyImpact;
+  const qa = buf.ia[i]! * IMPACT_STRIDE,
+    qb = buf.ib[i]! * IMPACT_STRIDE;
   const t0 = Math.max(imp[qa + BI_TIME]!, imp[qb + BI_TIME]!);
-  if (t0 > h) return false;
-  if (kind === ContactKind.Ball || kind === ContactKind.StaticBall) {
-    const P = c.PreviousPosition,
-      radius = c.Ball.radius;
-    const f = kind === ContactKind.Ball ? a : buf.feature[i]!;
-    const pa = kind === ContactKind.Ball ? P : c.Position;
-    const R = radius[f]! + radius[b]!;
-    // Relative position at t0: r = r0 + d_offsets + w t0 + a t0^2 / 2.
-    let rx = P.x[b]! + imp[qb + BI_CORR_X]! - pa.x[f]! - imp[qa + BI_CORR_X]! + wx * t0 + 0.5 * ax * t0 * t0;
-    let ry = P.y[b]! + imp[qb + BI_CORR_Y]! - pa.y[f]! - imp[qa + BI_CORR_Y]! + wy * t0 + 0.5 * ay * t0 * t0;
-    let rz = is2D ? 0 : P.z[b]! + imp[qb + BI_CORR_Z]! - pa.z[f]! - imp[qa + BI_CORR_Z]! + wz * t0 + 0.5 * az * t0 * t0;
-    let ux = wx + ax * t0,
-      uy = wy + ay * t0,
-      uz = wz + az * t0;
-    const c0 = rx * rx + ry * ry + rz * rz - R * R;
-    let t = 0;
-    if (c0 > 0) {
-      const span = h - t0;
-      const io = sweepIO;
-      io[0] = rx;
-      io[1] = ry;
-      io[2] = rz;
-      io[6] = R;
-      io[7] = span;
-      io[3] = ux;
-      io[4] = uy;
-      io[5] = uz;
+  if (t0 > world.h) return false;
+  const kind = buf.kind[i]!;
+  return kind === ContactKind.Ball || kind === ContactKind.StaticBall ? ballsHit(world, buf, i, S, t0) : faceHit(world, buf, i, S, t0);
+}
+
+/** contactState of ball contact i from t0 (s): the sweep of the balls' relative path from there, refined once for gravity. */
+function ballsHit(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number, t0: number): boolean {
+  const h = world.h;
+  // Relative position and velocity at t0: r = r0 + d_offsets + w t0 + a t0^2 / 2, u = w + a t0.
+  ballMotion(world, buf, i, S, t0);
+  const io = sweepIO;
+  let rx = io[0]!,
+    ry = io[1]!,
+    rz = io[2]!,
+    ux = io[3]!,
+    uy = io[4]!,
+    uz = io[5]!;
+  const R = io[6]!;
+  const ax = motionIO[0]!,
+    ay = motionIO[1]!,
+    az = motionIO[2]!;
+  const c0 = rx * rx + ry * ry + rz * rz - R * R;
+  let t = 0;
+  if (c0 > 0) {
+    const span = h - t0;
+    io[7] = span;
+    sweep();
+    t = io[8]!;
+    if (t < 0 && (ax !== 0 || ay !== 0 || az !== 0)) {
+      // Gravity bends the relative path: sweep again with the velocity at the middle of the span.
+      io[3] = ux + 0.5 * ax * span;
+      io[4] = uy + 0.5 * ay * span;
+      io[5] = uz + 0.5 * az * span;
       sweep();
       t = io[8]!;
-      if (t < 0 && (ax !== 0 || ay !== 0 || az !== 0)) {
-        // Gravity bends the relative path: sweep again with the velocity at the middle of the span.
-        io[3] = ux + 0.5 * ax * span;
-        io[4] = uy + 0.5 * ay * span;
-        io[5] = uz + 0.5 * az * span;
-        sweep();
-        t = io[8]!;
-      } else if (t >= 0 && (ax !== 0 || ay !== 0 || az !== 0)) {
-        // Refine with the mean velocity over [0, t].
-        io[3] = ux + 0.5 * ax * t;
-        io[4] = uy + 0.5 * ay * t;
-        io[5] = uz + 0.5 * az * t;
-        sweep();
-        const t2 = io[8]!;
-        if (t2 >= 0) t = t2;
-      }
-      if (t < 0) return false;
-      rx += ux * t + 0.5 * ax * t * t;
-      ry += uy * t + 0.5 * ay * t * t;
-      rz += uz * t + 0.5 * az * t * t;
-      ux += ax * t;
-      uy += ay * t;
-      uz += az * t;
+    } else if (t >= 0 && (ax !== 0 || ay !== 0 || az !== 0)) {
+      // Refine with the mean velocity over [0, t].
+      io[3] = ux + 0.5 * ax * t;
+      io[4] = uy + 0.5 * ay * t;
+      io[5] = uz + 0.5 * az * t;
+      sweep();
+      const t2 = io[8]!;
+      if (t2 >= 0) t = t2;
     }
-    const d = Math.sqrt(rx * rx + ry * ry + rz * rz);
-    if (!(d > 1e-12 * R)) return false;
-    const nx = rx / d,
-      ny = ry / d,
-      nz = rz / d;
-    const vn = ux * nx + uy * ny + uz * nz;
-    if (!(vn < 0)) return false;
-    return hitAt(t0 + t, nx, ny, nz, vn);
+    if (t < 0) return false;
+    rx += ux * t + 0.5 * ax * t * t;
+    ry += uy * t + 0.5 * ay * t * t;
+    rz += uz * t + 0.5 * az * t * t;
+    ux += ax * t;
+    uy += ay * t;
+    uz += az * t;
   }
-  // Fixed normal: boundary face, plane, segment.
-  const nx = buf.nx[i]!,
-    ny = buf.ny[i]!,
-    nz = buf.nz[i]!;
-  const an = ax * nx + ay * ny + az * nz;
-  const vn0 = wx * nx + wy * ny + wz * nz;
-  const s0 =
-    buf.separation[i]! +
-    (imp[qb + BI_CORR_X]! - imp[qa + BI_CORR_X]!) * nx +
-    (imp[qb + BI_CORR_Y]! - imp[qa + BI_CORR_Y]!) * ny +
-    (imp[qb + BI_CORR_Z]! - imp[qa + BI_CORR_Z]!) * nz;
-  const s = s0 + vn0 * t0 + 0.5 * an * t0 * t0;
-  const v = vn0 + an * t0;
+  const d = Math.sqrt(rx * rx + ry * ry + rz * rz);
+  if (!(d > 1e-12 * R)) return false;
+  const nx = rx / d,
+    ny = ry / d,
+    nz = rz / d;
+  const vn = ux * nx + uy * ny + uz * nz;
+  if (!(vn < 0)) return false;
+  return hitAt(t0 + t, nx, ny, nz, vn);
+}
+
+/** contactState of fixed-normal contact i (boundary face, plane, segment) from t0 (s): the gap's quadratic along the normal. */
+function faceHit(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number, t0: number): boolean {
+  faceMotion(world, buf, i, S, t0);
+  const s = motionIO[0]!,
+    v = motionIO[1]!,
+    an = motionIO[2]!;
   let t = 0;
   if (s > 0) {
     const disc = v * v - 2 * an * s;
@@ -163,11 +135,11 @@ export function contactState(world: PhysicsWorld, buf: ContactBuffer, i: number,
     const den = -v + Math.sqrt(disc);
     if (!(den > 0)) return false;
     t = (2 * s) / den;
-    if (t0 + t > h) return false;
+    if (t0 + t > world.h) return false;
   }
   const vn = v + an * t;
   if (!(vn < 0)) return false;
-  return hitAt(t0 + t, nx, ny, nz, vn);
+  return hitAt(t0 + t, buf.nx[i]!, buf.ny[i]!, buf.nz[i]!, vn);
 }
 
 /** Writes a contact's time of impact t (s), normal n and relative normal velocity vn (m/s) into `hit`; returns true. */
