@@ -494,21 +494,15 @@ export function applyManifoldRestitution(world: PhysicsWorld): void {
       const t1 = m > 0 && R[o1 + MP_MAX_NORMAL_IMPULSE]! > 0 ? restitutionTarget(e, v1, v1, threshold, elasticThreshold) : -1,
         t2 = m > 1 && R[o2 + MP_MAX_NORMAL_IMPULSE]! > 0 ? restitutionTarget(e, v2, v2, threshold, elasticThreshold) : -1;
       if (t1 < 0 && t2 < 0) continue;
+      // The bodies' velocities are read from and written to sb point by point (pushPoint): a bouncing row
+      // is rare, and the values are those a row's locals would carry.
       const a = (R[r + MR_BODY_A]! & MR_BODY_MASK) * BS2_STRIDE,
         b = (R[r + MR_BODY_B]! & MR_BODY_MASK) * BS2_STRIDE;
-      const mA = sb[a + BS2_INV_MASS]!,
-        iA = sb[a + BS2_INV_INERTIA]!,
-        mB = sb[b + BS2_INV_MASS]!,
-        iB = sb[b + BS2_INV_INERTIA]!;
       const nx = R[r + MR_NX]!,
         ny = R[r + MR_NY]!;
-      let vax = sb[a + BS2_VX]!,
-        vay = sb[a + BS2_VY]!,
-        wa = sb[a + BS2_W]!,
-        vbx = sb[b + BS2_VX]!,
-        vby = sb[b + BS2_VY]!,
+      const wa = sb[a + BS2_W]!,
         wb = sb[b + BS2_W]!;
-      const dvn = (vbx - vax) * nx + (vby - vay) * ny;
+      const dvn = (sb[b + BS2_VX]! - sb[a + BS2_VX]!) * nx + (sb[b + BS2_VY]! - sb[a + BS2_VY]!) * ny;
       if (all) {
         // Each point's cap: its impulse now plus Poisson's rebound; its compression is what it delivered
         // over the substeps plus what stops its approach now (in a block, with the other: -K^-1 v_n).
@@ -549,23 +543,29 @@ export function applyManifoldRestitution(world: PhysicsWorld): void {
         const old = p === 0 ? l1 : l2;
         let next = R[o + MP_NORMAL_IMPULSE]!;
         if (!block) {
-          const vn = (vbx - vax) * nx + (vby - vay) * ny + wb * nb - wa * na;
+          const vn =
+            (sb[b + BS2_VX]! - sb[a + BS2_VX]!) * nx + (sb[b + BS2_VY]! - sb[a + BS2_VY]!) * ny + sb[b + BS2_W]! * nb - sb[a + BS2_W]! * na;
           next = restitutionImpulse(old, R[o + CP_NORMAL_MASS]!, vn, target, caps[2 * i + p]!);
           R[o + MP_NORMAL_IMPULSE] = next;
         }
         const dl = next - old;
         R[o + MP_TOTAL_NORMAL_IMPULSE] = R[o + MP_TOTAL_NORMAL_IMPULSE]! + dl;
-        const Px = dl * nx,
-          Py = dl * ny;
-        vax -= mA * Px;
-        vay -= mA * Py;
-        wa -= iA * dl * na;
-        vbx += mB * Px;
-        vby += mB * Py;
-        wb += iB * dl * nb;
+        pushPoint(sb, a, b, dl * nx, dl * ny, dl, na, nb);
       }
-      storeVelocities2D(sb, a, b, vax, vay, wa, vbx, vby, wb);
     }
     if (listed === 0) break;
   }
+}
+
+/**
+ * Applies a point's impulse P = (px, py) = dl n to the bodies at packed offsets a and b of sb, with the
+ * point's arms na = r_A x n and nb = r_B x n: v_A -= P / m_A, w_A -= dl na / I_A, v_B += P / m_B, w_B += dl nb / I_B.
+ */
+function pushPoint(sb: Float64Array, a: number, b: number, px: number, py: number, dl: number, na: number, nb: number): void {
+  sb[a + BS2_VX] = sb[a + BS2_VX]! - sb[a + BS2_INV_MASS]! * px;
+  sb[a + BS2_VY] = sb[a + BS2_VY]! - sb[a + BS2_INV_MASS]! * py;
+  sb[a + BS2_W] = sb[a + BS2_W]! - sb[a + BS2_INV_INERTIA]! * dl * na;
+  sb[b + BS2_VX] = sb[b + BS2_VX]! + sb[b + BS2_INV_MASS]! * px;
+  sb[b + BS2_VY] = sb[b + BS2_VY]! + sb[b + BS2_INV_MASS]! * py;
+  sb[b + BS2_W] = sb[b + BS2_W]! + sb[b + BS2_INV_INERTIA]! * dl * nb;
 }
