@@ -1,30 +1,6 @@
 import { type ContactBuffer, ContactKind } from '../collision/contacts.js';
 import type { PhysicsWorld } from '../world/options.js';
-import {
-  BI_CORR_X,
-  BI_CORR_Y,
-  BI_CORR_Z,
-  BI_TIME,
-  BS2_INV_INERTIA,
-  BS2_INV_MASS,
-  BS2_STRIDE,
-  BS2_VX,
-  BS2_VY,
-  BS2_W,
-  BS3_INV_INERTIA,
-  BS3_INV_MASS,
-  BS3_VX,
-  BS3_VY,
-  BS3_VZ,
-  BS3_WX,
-  BS3_WY,
-  BS3_WZ,
-  BX_ROT_X,
-  BX_ROT_Y,
-  BX_ROT_Z,
-  BX_STRIDE,
-  IMPACT_STRIDE,
-} from './body-state-layout.js';
+import * as BS from './body-state-layout.js';
 import { ballMotion, faceMotion, motionIO } from './impact-motion.js';
 import { impactScalars, markChanged, sweepIO } from './impact-state.js';
 
@@ -41,9 +17,9 @@ export function fastEnough(sb: Float64Array, buf: ContactBuffer, i: number, S: n
   if (floor === 0) return true;
   const oa = buf.ia[i]! * S,
     ob = buf.ib[i]! * S;
-  const wx = sb[ob + BS2_VX]! - sb[oa + BS2_VX]!,
-    wy = sb[ob + BS2_VY]! - sb[oa + BS2_VY]!,
-    wz = S === BS2_STRIDE ? 0 : sb[ob + BS3_VZ]! - sb[oa + BS3_VZ]!;
+  const wx = sb[ob + BS.BS2_VX]! - sb[oa + BS.BS2_VX]!,
+    wy = sb[ob + BS.BS2_VY]! - sb[oa + BS.BS2_VY]!,
+    wz = S === BS.BS2_STRIDE ? 0 : sb[ob + BS.BS3_VZ]! - sb[oa + BS.BS3_VZ]!;
   const lim = floor - gh;
   return lim <= 0 || wx * wx + wy * wy + wz * wz > lim * lim;
 }
@@ -57,9 +33,9 @@ const hit = new Float64Array(5);
  */
 export function contactState(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number): boolean {
   const imp = world.collision.bodyImpact;
-  const qa = buf.ia[i]! * IMPACT_STRIDE,
-    qb = buf.ib[i]! * IMPACT_STRIDE;
-  const t0 = Math.max(imp[qa + BI_TIME]!, imp[qb + BI_TIME]!);
+  const qa = buf.ia[i]! * BS.IMPACT_STRIDE,
+    qb = buf.ib[i]! * BS.IMPACT_STRIDE;
+  const t0 = Math.max(imp[qa + BS.BI_TIME]!, imp[qb + BS.BI_TIME]!);
   if (t0 > world.h) return false;
   const kind = buf.kind[i]!;
   return kind === ContactKind.Ball || kind === ContactKind.StaticBall ? ballsHit(world, buf, i, S, t0) : faceHit(world, buf, i, S, t0);
@@ -206,9 +182,9 @@ export function impact(world: PhysicsWorld, buf: ContactBuffer, i: number, S: nu
     ib = buf.ib[i]!;
   const oa = ia * S,
     ob = ib * S;
-  const is2D = S === BS2_STRIDE;
-  const im = is2D ? BS2_INV_MASS : BS3_INV_MASS,
-    iI = is2D ? BS2_INV_INERTIA : BS3_INV_INERTIA;
+  const is2D = S === BS.BS2_STRIDE;
+  const im = is2D ? BS.BS2_INV_MASS : BS.BS3_INV_MASS,
+    iI = is2D ? BS.BS2_INV_INERTIA : BS.BS3_INV_INERTIA;
   const imA = sb[oa + im]!,
     imB = sb[ob + im]!,
     iiA = sb[oa + iI]!,
@@ -235,10 +211,10 @@ export function impact(world: PhysicsWorld, buf: ContactBuffer, i: number, S: nu
     const maxF = mu * J;
     if (is2D) {
       const vt =
-        (sb[ob + BS2_VX]! - sb[oa + BS2_VX]!) * -ny +
-        (sb[ob + BS2_VY]! - sb[oa + BS2_VY]!) * nx -
-        sb[ob + BS2_W]! * rb -
-        sb[oa + BS2_W]! * ra;
+        (sb[ob + BS.BS2_VX]! - sb[oa + BS.BS2_VX]!) * -ny +
+        (sb[ob + BS.BS2_VY]! - sb[oa + BS.BS2_VY]!) * nx -
+        sb[ob + BS.BS2_W]! * rb -
+        sb[oa + BS.BS2_W]! * ra;
       let lt = -tm * vt;
       lt = lt < -maxF ? -maxF : lt > maxF ? maxF : lt;
       Px += -lt * ny;
@@ -261,12 +237,12 @@ export function impact(world: PhysicsWorld, buf: ContactBuffer, i: number, S: nu
       const t2x = ny * t1z - nz * t1y,
         t2y = nz * t1x - nx * t1z,
         t2z = nx * t1y - ny * t1x;
-      const sx = -rb * sb[ob + BS3_WX]! - ra * sb[oa + BS3_WX]!,
-        sy = -rb * sb[ob + BS3_WY]! - ra * sb[oa + BS3_WY]!,
-        sz = -rb * sb[ob + BS3_WZ]! - ra * sb[oa + BS3_WZ]!;
-      const ux = sb[ob + BS3_VX]! - sb[oa + BS3_VX]! + sy * nz - sz * ny,
-        uy = sb[ob + BS3_VY]! - sb[oa + BS3_VY]! + sz * nx - sx * nz,
-        uz = sb[ob + BS3_VZ]! - sb[oa + BS3_VZ]! + sx * ny - sy * nx;
+      const sx = -rb * sb[ob + BS.BS3_WX]! - ra * sb[oa + BS.BS3_WX]!,
+        sy = -rb * sb[ob + BS.BS3_WY]! - ra * sb[oa + BS.BS3_WY]!,
+        sz = -rb * sb[ob + BS.BS3_WZ]! - ra * sb[oa + BS.BS3_WZ]!;
+      const ux = sb[ob + BS.BS3_VX]! - sb[oa + BS.BS3_VX]! + sy * nz - sz * ny,
+        uy = sb[ob + BS.BS3_VY]! - sb[oa + BS.BS3_VY]! + sz * nx - sx * nz,
+        uz = sb[ob + BS.BS3_VZ]! - sb[oa + BS.BS3_VZ]! + sx * ny - sy * nx;
       let l1 = -tm * (ux * t1x + uy * t1y + uz * t1z),
         l2 = -tm * (ux * t2x + uy * t2y + uz * t2z);
       const mag2 = l1 * l1 + l2 * l2;
@@ -292,38 +268,38 @@ export function impact(world: PhysicsWorld, buf: ContactBuffer, i: number, S: nu
       dwb2 = -iiB * rb * cz;
     }
   }
-  const qa = ia * IMPACT_STRIDE,
-    qb = ib * IMPACT_STRIDE;
-  const xa = ia * BX_STRIDE,
-    xb = ib * BX_STRIDE;
+  const qa = ia * BS.IMPACT_STRIDE,
+    qb = ib * BS.IMPACT_STRIDE;
+  const xa = ia * BS.BX_STRIDE,
+    xb = ib * BS.BX_STRIDE;
   // Velocity changes; positions corrected by -dv t (the bodies kept the old velocity until t).
-  sb[oa + BS2_VX] = sb[oa + BS2_VX]! - imA * Px;
-  sb[oa + BS2_VY] = sb[oa + BS2_VY]! - imA * Py;
-  sb[ob + BS2_VX] = sb[ob + BS2_VX]! + imB * Px;
-  sb[ob + BS2_VY] = sb[ob + BS2_VY]! + imB * Py;
-  imp[qa + BI_CORR_X] = imp[qa + BI_CORR_X]! + imA * Px * t;
-  imp[qa + BI_CORR_Y] = imp[qa + BI_CORR_Y]! + imA * Py * t;
-  imp[qb + BI_CORR_X] = imp[qb + BI_CORR_X]! - imB * Px * t;
-  imp[qb + BI_CORR_Y] = imp[qb + BI_CORR_Y]! - imB * Py * t;
+  sb[oa + BS.BS2_VX] = sb[oa + BS.BS2_VX]! - imA * Px;
+  sb[oa + BS.BS2_VY] = sb[oa + BS.BS2_VY]! - imA * Py;
+  sb[ob + BS.BS2_VX] = sb[ob + BS.BS2_VX]! + imB * Px;
+  sb[ob + BS.BS2_VY] = sb[ob + BS.BS2_VY]! + imB * Py;
+  imp[qa + BS.BI_CORR_X] = imp[qa + BS.BI_CORR_X]! + imA * Px * t;
+  imp[qa + BS.BI_CORR_Y] = imp[qa + BS.BI_CORR_Y]! + imA * Py * t;
+  imp[qb + BS.BI_CORR_X] = imp[qb + BS.BI_CORR_X]! - imB * Px * t;
+  imp[qb + BS.BI_CORR_Y] = imp[qb + BS.BI_CORR_Y]! - imB * Py * t;
   if (is2D) {
     if (iiA > 0) {
-      sb[oa + BS2_W] = sb[oa + BS2_W]! + dwa2;
-      ex[xa + BX_ROT_Z] = ex[xa + BX_ROT_Z]! - dwa2 * t;
+      sb[oa + BS.BS2_W] = sb[oa + BS.BS2_W]! + dwa2;
+      ex[xa + BS.BX_ROT_Z] = ex[xa + BS.BX_ROT_Z]! - dwa2 * t;
     }
     if (iiB > 0) {
-      sb[ob + BS2_W] = sb[ob + BS2_W]! + dwb2;
-      ex[xb + BX_ROT_Z] = ex[xb + BX_ROT_Z]! - dwb2 * t;
+      sb[ob + BS.BS2_W] = sb[ob + BS.BS2_W]! + dwb2;
+      ex[xb + BS.BX_ROT_Z] = ex[xb + BS.BX_ROT_Z]! - dwb2 * t;
     }
   } else {
-    sb[oa + BS3_VZ] = sb[oa + BS3_VZ]! - imA * Pz;
-    sb[ob + BS3_VZ] = sb[ob + BS3_VZ]! + imB * Pz;
-    imp[qa + BI_CORR_Z] = imp[qa + BI_CORR_Z]! + imA * Pz * t;
-    imp[qb + BI_CORR_Z] = imp[qb + BI_CORR_Z]! - imB * Pz * t;
+    sb[oa + BS.BS3_VZ] = sb[oa + BS.BS3_VZ]! - imA * Pz;
+    sb[ob + BS.BS3_VZ] = sb[ob + BS.BS3_VZ]! + imB * Pz;
+    imp[qa + BS.BI_CORR_Z] = imp[qa + BS.BI_CORR_Z]! + imA * Pz * t;
+    imp[qb + BS.BI_CORR_Z] = imp[qb + BS.BI_CORR_Z]! - imB * Pz * t;
     if (iiA > 0) spinChange3D(sb, ex, oa, xa, dwa0, dwa1, dwa2, t);
     if (iiB > 0) spinChange3D(sb, ex, ob, xb, dwb0, dwb1, dwb2, t);
   }
-  if (ia !== 0 && imA > 0) imp[qa + BI_TIME] = t;
-  if (imB > 0) imp[qb + BI_TIME] = t;
+  if (ia !== 0 && imA > 0) imp[qa + BS.BI_TIME] = t;
+  if (imB > 0) imp[qb + BS.BI_TIME] = t;
   buf.nx[i] = nx;
   buf.ny[i] = ny;
   buf.nz[i] = nz;
@@ -338,10 +314,10 @@ export function impact(world: PhysicsWorld, buf: ContactBuffer, i: number, S: nu
  * until the time of impact t (s).
  */
 function spinChange3D(sb: Float64Array, ex: Float64Array, o: number, x: number, d0: number, d1: number, d2: number, t: number): void {
-  sb[o + BS3_WX] = sb[o + BS3_WX]! + d0;
-  sb[o + BS3_WY] = sb[o + BS3_WY]! + d1;
-  sb[o + BS3_WZ] = sb[o + BS3_WZ]! + d2;
-  ex[x + BX_ROT_X] = ex[x + BX_ROT_X]! - d0 * t;
-  ex[x + BX_ROT_Y] = ex[x + BX_ROT_Y]! - d1 * t;
-  ex[x + BX_ROT_Z] = ex[x + BX_ROT_Z]! - d2 * t;
+  sb[o + BS.BS3_WX] = sb[o + BS.BS3_WX]! + d0;
+  sb[o + BS.BS3_WY] = sb[o + BS.BS3_WY]! + d1;
+  sb[o + BS.BS3_WZ] = sb[o + BS.BS3_WZ]! + d2;
+  ex[x + BS.BX_ROT_X] = ex[x + BS.BX_ROT_X]! - d0 * t;
+  ex[x + BS.BX_ROT_Y] = ex[x + BS.BX_ROT_Y]! - d1 * t;
+  ex[x + BS.BX_ROT_Z] = ex[x + BS.BX_ROT_Z]! - d2 * t;
 }

@@ -259,19 +259,10 @@ function unclean(imp: Float64Array, k: number): void {
  */
 function linearClosure(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number): number {
   const reach = impactScalars[2]!;
-  const cs = world.collision;
-  const sb = cs.bodyState,
-    type = cs.bodyType,
-    g = world.gravity;
-  const oa = buf.ia[i]! * S,
-    ob = buf.ib[i]! * S;
-  const nx = buf.nx[i]!,
-    ny = buf.ny[i]!,
-    nz = buf.nz[i]!;
-  const vn = normalVelocity(sb, oa, ob, nx, ny, nz, S);
-  const a = buf.a[i]!,
-    b = buf.b[i]!;
-  const an = gravitySign(type, a, b) * (g[0]! * nx + g[1]! * ny + g[2]! * nz);
+  // The normal approach and gravity's normal acceleration now (t0 = 0; the gap faceMotion writes is not read).
+  faceMotion(world, buf, i, S, 0);
+  const vn = motionIO[1]!,
+    an = motionIO[2]!;
   return (vn < 0 ? -vn * reach : 0) + (an < 0 ? -an * reach * reach : 0);
 }
 
