@@ -98,29 +98,39 @@ export function ballMotion(world: PhysicsWorld, buf: ContactBuffer, i: number, S
 }
 
 /**
- * Fixed-normal contact i (boundary face, plane, segment) at time t0 of the step (s), at the current solver
- * velocities (rows of stride S) and with the bodies' end-position corrections, along its normal n: writes
- * the gap s(t0) = s0 + (c_B - c_A) . n + v_n t0 + a_n t0^2 / 2 (m), the normal speed v_n + a_n t0 and the
- * normal acceleration a_n of gravity to motionIO 0-2.
+ * Contact i's normal relative velocity v_n (m/s, negative while approaching) at the current solver
+ * velocities (rows of stride S: BS2_STRIDE or BS3_STRIDE) and the normal component a_n of gravity's
+ * relative acceleration (m/s^2), along its normal n: written to motionIO 1 and 2.
  */
-export function faceMotion(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number, t0: number): void {
+export function normalMotion(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number): void {
   const cs = world.collision,
-    imp = cs.bodyImpact,
     g = world.gravity;
-  const qa = buf.ia[i]! * IMPACT_STRIDE,
-    qb = buf.ib[i]! * IMPACT_STRIDE;
   const nx = buf.nx[i]!,
     ny = buf.ny[i]!,
     nz = buf.nz[i]!;
-  const vn = normalVelocity(cs.bodyState, buf.ia[i]! * S, buf.ib[i]! * S, nx, ny, nz, S);
-  const an = gravitySign(cs.bodyType, buf.a[i]!, buf.b[i]!) * (g[0]! * nx + g[1]! * ny + g[2]! * nz);
+  motionIO[1] = normalVelocity(cs.bodyState, buf.ia[i]! * S, buf.ib[i]! * S, nx, ny, nz, S);
+  motionIO[2] = gravitySign(cs.bodyType, buf.a[i]!, buf.b[i]!) * (g[0]! * nx + g[1]! * ny + g[2]! * nz);
+}
+
+/**
+ * Fixed-normal contact i (boundary face, plane, segment) at time t0 of the step (s), at the current solver
+ * velocities (rows of stride S) and with the bodies' end-position corrections, along its normal n: writes
+ * the gap s(t0) = s0 + (c_B - c_A) . n + v_n t0 + a_n t0^2 / 2 (m), the normal speed v_n + a_n t0 and the
+ * normal acceleration a_n of gravity (normalMotion) to motionIO 0-2.
+ */
+export function faceMotion(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number, t0: number): void {
+  normalMotion(world, buf, i, S);
+  const vn = motionIO[1]!,
+    an = motionIO[2]!;
+  const imp = world.collision.bodyImpact;
+  const qa = buf.ia[i]! * IMPACT_STRIDE,
+    qb = buf.ib[i]! * IMPACT_STRIDE;
   motionIO[0] =
     buf.separation[i]! +
-    (imp[qb + BI_CORR_X]! - imp[qa + BI_CORR_X]!) * nx +
-    (imp[qb + BI_CORR_Y]! - imp[qa + BI_CORR_Y]!) * ny +
-    (imp[qb + BI_CORR_Z]! - imp[qa + BI_CORR_Z]!) * nz +
+    (imp[qb + BI_CORR_X]! - imp[qa + BI_CORR_X]!) * buf.nx[i]! +
+    (imp[qb + BI_CORR_Y]! - imp[qa + BI_CORR_Y]!) * buf.ny[i]! +
+    (imp[qb + BI_CORR_Z]! - imp[qa + BI_CORR_Z]!) * buf.nz[i]! +
     vn * t0 +
     0.5 * an * t0 * t0;
   motionIO[1] = vn + an * t0;
-  motionIO[2] = an;
 }

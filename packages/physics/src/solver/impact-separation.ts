@@ -2,7 +2,7 @@ import { type ContactBuffer, ContactKind } from '../collision/contacts.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { BI_ALONE, BI_CORR_X, BI_CORR_Y, BI_CORR_Z, IMPACT_STRIDE } from './body-state-layout.js';
 import { contactState, sweep } from './impact-contact.js';
-import { ballMotion, contactRadius, faceMotion, gravitySign, latestImpactTime, motionIO, normalVelocity } from './impact-motion.js';
+import { ballMotion, contactRadius, faceMotion, latestImpactTime, motionIO, normalMotion } from './impact-motion.js';
 import { impactScalars, impactScratch, markChanged, sweepIO } from './impact-state.js';
 import { jointsToSolve } from './row-families.js';
 
@@ -259,8 +259,7 @@ function unclean(imp: Float64Array, k: number): void {
  */
 function linearClosure(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number): number {
   const reach = impactScalars[2]!;
-  // The normal approach and gravity's normal acceleration now (t0 = 0; the gap faceMotion writes is not read).
-  faceMotion(world, buf, i, S, 0);
+  normalMotion(world, buf, i, S);
   const vn = motionIO[1]!,
     an = motionIO[2]!;
   return (vn < 0 ? -vn * reach : 0) + (an < 0 ? -an * reach * reach : 0);
@@ -308,15 +307,8 @@ function ballsMeet(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number
     // rounding-level length within the step), or gravity presses it.
     const R = contactRadius(world, buf, i);
     if (carriesLoad(world, buf, i) || s0 < -1e-6 * R) return true;
-    const nx = buf.nx[i]!,
-      ny = buf.ny[i]!,
-      nz = buf.nz[i]!;
-    const vn = normalVelocity(world.collision.bodyState, buf.ia[i]! * S, buf.ib[i]! * S, nx, ny, nz, S);
-    const g = world.gravity;
-    return (
-      vn * world.h < -ROUNDING * R ||
-      gravitySign(world.collision.bodyType, buf.a[i]!, buf.b[i]!) * (g[0]! * nx + g[1]! * ny + g[2]! * nz) < 0
-    );
+    normalMotion(world, buf, i, S);
+    return motionIO[1]! * world.h < -ROUNDING * R || motionIO[2]! < 0;
   }
   // Relative position and velocity at t0, the later of the bodies' latest impacts (0 if none).
   const t0 = latestImpactTime(imp, qa, qb);
