@@ -18,7 +18,6 @@ const MAX_LINES = 150;
 const LEFT: Readonly<Record<string, number>> = {
   'forces/barnes-hut/walk-kernel.ts barnesHutWalk': 513,
   'solver/manifold-solve-3d.ts solveManifolds3D': 337,
-  'solver/coloring-kernel.ts solveColored2D': 180,
   'solver/ball-sweeps.ts solve3D': 161,
 };
 

@@ -6,30 +6,7 @@
 
 import type { ContactBuffer } from '../collision/contacts.js';
 import type { CollisionState } from '../collision/state.js';
-import {
-  BS2_DX,
-  BS2_DY,
-  BS2_INV_INERTIA,
-  BS2_INV_MASS,
-  BS2_PUSHED,
-  BS2_STRIDE,
-  BS2_VX,
-  BS2_VY,
-  BS2_W,
-  BS3_DX,
-  BS3_DY,
-  BS3_DZ,
-  BS3_INV_INERTIA,
-  BS3_INV_MASS,
-  BS3_PUSHED,
-  BS3_STRIDE,
-  BS3_VX,
-  BS3_VY,
-  BS3_VZ,
-  BS3_WX,
-  BS3_WY,
-  BS3_WZ,
-} from './body-state-layout.js';
+import * as BS from './body-state-layout.js';
 import { storeBody3D, storeVelocities2D } from './body-velocities.js';
 import { heldSupportBall } from './support.js';
 /** Applies every contact's accumulated impulse (Box2D v3 warm start, once per substep), 2D. */
@@ -48,22 +25,22 @@ export function warmStart2D(cs: CollisionState, buf: ContactBuffer): void {
     const ln = LN[i]!,
       lt = LT[i]!;
     if (ln === 0 && lt === 0) continue;
-    const a = IA[i]! * BS2_STRIDE,
-      b = IB[i]! * BS2_STRIDE;
-    sb[a + BS2_PUSHED] = 1;
-    sb[b + BS2_PUSHED] = 1;
+    const a = IA[i]! * BS.BS2_STRIDE,
+      b = IB[i]! * BS.BS2_STRIDE;
+    sb[a + BS.BS2_PUSHED] = 1;
+    sb[b + BS.BS2_PUSHED] = 1;
     const nx = NX[i]!,
       ny = NY[i]!;
     const Px = ln * nx - lt * ny,
       Py = ln * ny + lt * nx;
-    const imA = sb[a + BS2_INV_MASS]!,
-      imB = sb[b + BS2_INV_MASS]!;
-    sb[a + BS2_VX] = sb[a + BS2_VX]! - imA * Px;
-    sb[a + BS2_VY] = sb[a + BS2_VY]! - imA * Py;
-    sb[b + BS2_VX] = sb[b + BS2_VX]! + imB * Px;
-    sb[b + BS2_VY] = sb[b + BS2_VY]! + imB * Py;
-    sb[a + BS2_W] = sb[a + BS2_W]! - sb[a + BS2_INV_INERTIA]! * RA[i]! * lt;
-    sb[b + BS2_W] = sb[b + BS2_W]! - sb[b + BS2_INV_INERTIA]! * RB[i]! * lt;
+    const imA = sb[a + BS.BS2_INV_MASS]!,
+      imB = sb[b + BS.BS2_INV_MASS]!;
+    sb[a + BS.BS2_VX] = sb[a + BS.BS2_VX]! - imA * Px;
+    sb[a + BS.BS2_VY] = sb[a + BS.BS2_VY]! - imA * Py;
+    sb[b + BS.BS2_VX] = sb[b + BS.BS2_VX]! + imB * Px;
+    sb[b + BS.BS2_VY] = sb[b + BS.BS2_VY]! + imB * Py;
+    sb[a + BS.BS2_W] = sb[a + BS.BS2_W]! - sb[a + BS.BS2_INV_INERTIA]! * RA[i]! * lt;
+    sb[b + BS.BS2_W] = sb[b + BS.BS2_W]! - sb[b + BS.BS2_INV_INERTIA]! * RB[i]! * lt;
   }
 }
 
@@ -89,10 +66,10 @@ export function warmStart3D(cs: CollisionState, buf: ContactBuffer): void {
       l1 = L1[i]!,
       l2 = L2[i]!;
     if (ln === 0 && l1 === 0 && l2 === 0) continue;
-    const a = IA[i]! * BS3_STRIDE,
-      b = IB[i]! * BS3_STRIDE;
-    sb[a + BS3_PUSHED] = 1;
-    sb[b + BS3_PUSHED] = 1;
+    const a = IA[i]! * BS.BS3_STRIDE,
+      b = IB[i]! * BS.BS3_STRIDE;
+    sb[a + BS.BS3_PUSHED] = 1;
+    sb[b + BS.BS3_PUSHED] = 1;
     const nx = NX[i]!,
       ny = NY[i]!,
       nz = NZ[i]!,
@@ -105,25 +82,25 @@ export function warmStart3D(cs: CollisionState, buf: ContactBuffer): void {
     const Px = ln * nx + l1 * t1x + l2 * t2x,
       Py = ln * ny + l1 * t1y + l2 * t2y,
       Pz = ln * nz + l1 * t1z + l2 * t2z;
-    const imA = sb[a + BS3_INV_MASS]!,
-      imB = sb[b + BS3_INV_MASS]!;
-    sb[a + BS3_VX] = sb[a + BS3_VX]! - imA * Px;
-    sb[a + BS3_VY] = sb[a + BS3_VY]! - imA * Py;
-    sb[a + BS3_VZ] = sb[a + BS3_VZ]! - imA * Pz;
-    sb[b + BS3_VX] = sb[b + BS3_VX]! + imB * Px;
-    sb[b + BS3_VY] = sb[b + BS3_VY]! + imB * Py;
-    sb[b + BS3_VZ] = sb[b + BS3_VZ]! + imB * Pz;
+    const imA = sb[a + BS.BS3_INV_MASS]!,
+      imB = sb[b + BS.BS3_INV_MASS]!;
+    sb[a + BS.BS3_VX] = sb[a + BS.BS3_VX]! - imA * Px;
+    sb[a + BS.BS3_VY] = sb[a + BS.BS3_VY]! - imA * Py;
+    sb[a + BS.BS3_VZ] = sb[a + BS.BS3_VZ]! - imA * Pz;
+    sb[b + BS.BS3_VX] = sb[b + BS.BS3_VX]! + imB * Px;
+    sb[b + BS.BS3_VY] = sb[b + BS.BS3_VY]! + imB * Py;
+    sb[b + BS.BS3_VZ] = sb[b + BS.BS3_VZ]! + imB * Pz;
     const cx = ny * Pz - nz * Py,
       cy = nz * Px - nx * Pz,
       cz = nx * Py - ny * Px;
-    const ka = sb[a + BS3_INV_INERTIA]! * RA[i]!,
-      kb = sb[b + BS3_INV_INERTIA]! * RB[i]!;
-    sb[a + BS3_WX] = sb[a + BS3_WX]! - ka * cx;
-    sb[a + BS3_WY] = sb[a + BS3_WY]! - ka * cy;
-    sb[a + BS3_WZ] = sb[a + BS3_WZ]! - ka * cz;
-    sb[b + BS3_WX] = sb[b + BS3_WX]! - kb * cx;
-    sb[b + BS3_WY] = sb[b + BS3_WY]! - kb * cy;
-    sb[b + BS3_WZ] = sb[b + BS3_WZ]! - kb * cz;
+    const ka = sb[a + BS.BS3_INV_INERTIA]! * RA[i]!,
+      kb = sb[b + BS.BS3_INV_INERTIA]! * RB[i]!;
+    sb[a + BS.BS3_WX] = sb[a + BS.BS3_WX]! - ka * cx;
+    sb[a + BS.BS3_WY] = sb[a + BS.BS3_WY]! - ka * cy;
+    sb[a + BS.BS3_WZ] = sb[a + BS.BS3_WZ]! - ka * cz;
+    sb[b + BS.BS3_WX] = sb[b + BS.BS3_WX]! - kb * cx;
+    sb[b + BS.BS3_WY] = sb[b + BS.BS3_WY]! - kb * cy;
+    sb[b + BS.BS3_WZ] = sb[b + BS.BS3_WZ]! - kb * cz;
   }
 }
 
@@ -171,16 +148,16 @@ export function solve2D(sb: Float64Array, buf: ContactBuffer, useBias: boolean, 
   const end = useBias ? n : count;
   for (let k = 0; k < end; k++) {
     const i = useBias ? k : order[k]!;
-    const a = IA[i]! * BS2_STRIDE,
-      b = IB[i]! * BS2_STRIDE;
+    const a = IA[i]! * BS.BS2_STRIDE,
+      b = IB[i]! * BS.BS2_STRIDE;
     const nx = NX[i]!,
       ny = NY[i]!;
-    const imA = sb[a + BS2_INV_MASS]!,
-      imB = sb[b + BS2_INV_MASS]!;
-    let vax = sb[a + BS2_VX]!,
-      vay = sb[a + BS2_VY]!,
-      vbx = sb[b + BS2_VX]!,
-      vby = sb[b + BS2_VY]!;
+    const imA = sb[a + BS.BS2_INV_MASS]!,
+      imB = sb[b + BS.BS2_INV_MASS]!;
+    let vax = sb[a + BS.BS2_VX]!,
+      vay = sb[a + BS.BS2_VY]!,
+      vbx = sb[b + BS.BS2_VX]!,
+      vby = sb[b + BS.BS2_VY]!;
     // The normal impulse's inverse masses and effective mass: a support row of the relax sweep, one
     // without friction or one whose upper ball is the heavier, may hold its lower ball (solver/support.ts).
     let jmA = imA,
@@ -196,7 +173,7 @@ export function solve2D(sb: Float64Array, buf: ContactBuffer, useBias: boolean, 
     }
 
     // Non-penetration, soft when overlapping and useBias, speculative when apart.
-    const s = S0[i]! + (sb[b + BS2_DX]! - sb[a + BS2_DX]!) * nx + (sb[b + BS2_DY]! - sb[a + BS2_DY]!) * ny;
+    const s = S0[i]! + (sb[b + BS.BS2_DX]! - sb[a + BS.BS2_DX]!) * nx + (sb[b + BS.BS2_DY]! - sb[a + BS.BS2_DY]!) * ny;
     let bias = 0,
       massScale = 1,
       impulseScale = 0;
@@ -234,8 +211,8 @@ export function solve2D(sb: Float64Array, buf: ContactBuffer, useBias: boolean, 
     // Coulomb friction along t = (-ny, nx) at the contact point.
     const ra = RA[i]!,
       rb = RB[i]!;
-    let wa = sb[a + BS2_W]!,
-      wb = sb[b + BS2_W]!;
+    let wa = sb[a + BS.BS2_W]!,
+      wb = sb[b + BS.BS2_W]!;
     const vt = (vbx - vax) * -ny + (vby - vay) * nx - wb * rb - wa * ra;
     lambda = -TM[i]! * vt;
     const maxF = FB[i]! * newN;
@@ -250,13 +227,13 @@ export function solve2D(sb: Float64Array, buf: ContactBuffer, useBias: boolean, 
     vay -= imA * Py;
     vbx += imB * Px;
     vby += imB * Py;
-    wa -= sb[a + BS2_INV_INERTIA]! * ra * lambda;
-    wb -= sb[b + BS2_INV_INERTIA]! * rb * lambda;
+    wa -= sb[a + BS.BS2_INV_INERTIA]! * ra * lambda;
+    wb -= sb[b + BS.BS2_INV_INERTIA]! * rb * lambda;
 
     storeVelocities2D(sb, a, b, vax, vay, wa, vbx, vby, wb);
     if (newN !== 0 || newT !== 0) {
-      sb[a + BS2_PUSHED] = 1;
-      sb[b + BS2_PUSHED] = 1;
+      sb[a + BS.BS2_PUSHED] = 1;
+      sb[b + BS.BS2_PUSHED] = 1;
     }
   }
 }
@@ -298,24 +275,24 @@ export function solve3D(sb: Float64Array, buf: ContactBuffer, useBias: boolean, 
   const end = useBias ? n : count;
   for (let k = 0; k < end; k++) {
     const i = useBias ? k : order[k]!;
-    const a = IA[i]! * BS3_STRIDE,
-      b = IB[i]! * BS3_STRIDE;
+    const a = IA[i]! * BS.BS3_STRIDE,
+      b = IB[i]! * BS.BS3_STRIDE;
     const nx = NX[i]!,
       ny = NY[i]!,
       nz = NZ[i]!;
-    const imA = sb[a + BS3_INV_MASS]!,
-      imB = sb[b + BS3_INV_MASS]!;
-    let vax = sb[a + BS3_VX]!,
-      vay = sb[a + BS3_VY]!,
-      vaz = sb[a + BS3_VZ]!,
-      vbx = sb[b + BS3_VX]!,
-      vby = sb[b + BS3_VY]!,
-      vbz = sb[b + BS3_VZ]!;
+    const imA = sb[a + BS.BS3_INV_MASS]!,
+      imB = sb[b + BS.BS3_INV_MASS]!;
+    let vax = sb[a + BS.BS3_VX]!,
+      vay = sb[a + BS.BS3_VY]!,
+      vaz = sb[a + BS.BS3_VZ]!,
+      vbx = sb[b + BS.BS3_VX]!,
+      vby = sb[b + BS.BS3_VY]!,
+      vbz = sb[b + BS.BS3_VZ]!;
     const s =
       S0[i]! +
-      (sb[b + BS3_DX]! - sb[a + BS3_DX]!) * nx +
-      (sb[b + BS3_DY]! - sb[a + BS3_DY]!) * ny +
-      (sb[b + BS3_DZ]! - sb[a + BS3_DZ]!) * nz;
+      (sb[b + BS.BS3_DX]! - sb[a + BS.BS3_DX]!) * nx +
+      (sb[b + BS.BS3_DY]! - sb[a + BS.BS3_DY]!) * ny +
+      (sb[b + BS.BS3_DZ]! - sb[a + BS.BS3_DZ]!) * nz;
     let bias = 0,
       massScale = 1,
       impulseScale = 0;
@@ -361,12 +338,12 @@ export function solve3D(sb: Float64Array, buf: ContactBuffer, useBias: boolean, 
     // Friction in the tangent plane, clamped to the Coulomb cone.
     const ra = RA[i]!,
       rb = RB[i]!;
-    let wax = sb[a + BS3_WX]!,
-      way = sb[a + BS3_WY]!,
-      waz = sb[a + BS3_WZ]!,
-      wbx = sb[b + BS3_WX]!,
-      wby = sb[b + BS3_WY]!,
-      wbz = sb[b + BS3_WZ]!;
+    let wax = sb[a + BS.BS3_WX]!,
+      way = sb[a + BS.BS3_WY]!,
+      waz = sb[a + BS.BS3_WZ]!,
+      wbx = sb[b + BS.BS3_WX]!,
+      wby = sb[b + BS.BS3_WY]!,
+      wbz = sb[b + BS.BS3_WZ]!;
     let ux = vbx - vax,
       uy = vby - vay,
       uz = vbz - vaz;
@@ -411,8 +388,8 @@ export function solve3D(sb: Float64Array, buf: ContactBuffer, useBias: boolean, 
       const cx = ny * Pz - nz * Py,
         cy = nz * Px - nx * Pz,
         cz = nx * Py - ny * Px;
-      const ka = sb[a + BS3_INV_INERTIA]! * ra,
-        kb = sb[b + BS3_INV_INERTIA]! * rb;
+      const ka = sb[a + BS.BS3_INV_INERTIA]! * ra,
+        kb = sb[b + BS.BS3_INV_INERTIA]! * rb;
       wax -= ka * cx;
       way -= ka * cy;
       waz -= ka * cz;
@@ -423,8 +400,8 @@ export function solve3D(sb: Float64Array, buf: ContactBuffer, useBias: boolean, 
     storeBody3D(sb, a, vax, vay, vaz, wax, way, waz);
     storeBody3D(sb, b, vbx, vby, vbz, wbx, wby, wbz);
     if (newN !== 0 || n1 !== 0 || n2 !== 0) {
-      sb[a + BS3_PUSHED] = 1;
-      sb[b + BS3_PUSHED] = 1;
+      sb[a + BS.BS3_PUSHED] = 1;
+      sb[b + BS.BS3_PUSHED] = 1;
     }
   }
 }

@@ -4,40 +4,13 @@
  * says when.
  */
 
-import type { awaitBlocks, claimBlock } from '../threads/block-claim.js';
 import type { KernelArray, KernelHelper } from '../threads/kernel-types.js';
-import {
-  BS2_DX,
-  BS2_DY,
-  BS2_INV_INERTIA,
-  BS2_INV_MASS,
-  BS2_PUSHED,
-  BS2_STRIDE,
-  BS2_VX,
-  BS2_VY,
-  BS2_W,
-  BX_ROT_Z,
-  BX_STRIDE,
-} from './body-state-layout.js';
-import {
-  PACK_STRIDE,
-  PK_A_FIXED,
-  PK_FRICTION,
-  PK_MAX_NORMAL_IMPULSE,
-  PK_NORMAL_IMPULSE,
-  PK_NORMAL_MASS,
-  PK_NX,
-  PK_NY,
-  PK_RA,
-  PK_RB,
-  PK_SEPARATION,
-  PK_TANGENT_IMPULSE,
-  PK_TANGENT_MASS,
-} from './contact-pack-2d.js';
+import * as BS from './body-state-layout.js';
+import * as PACK from './contact-pack-2d.js';
 import * as APPROACH from './slots/approach.js';
 import * as PLAN from './slots/colored-plan.js';
 import * as SOLVE from './slots/colored-solve.js';
-import type { approachSpeeds } from './stages-kernel.js';
+import type { approachSpeeds, runUnitBlocks, UnitBlocks } from './stages-kernel.js';
 
 /**
  * Thread kernel (step/kernel-table.ts rules: self-contained) of the coloured substeps, run by every
@@ -143,18 +116,46 @@ export function solveColored2D(
   // thread solves the same strips pass after pass, their bodies and rows in its core's cache.
   const claim = A[SOLVE.CLAIM] as Int32Array,
     threads = plan[PLAN.THREADS]! > 0 ? plan[PLAN.THREADS]! : 1;
-  const claimNext = H[9] as typeof claimBlock,
-    awaitUnit = H[16] as typeof awaitBlocks,
-    cursor = new Int32Array(2);
+  const unit: UnitBlocks = { claim, bar, part, threads, wait, spinMs, cursor: new Int32Array(2), H };
+  const runUnit = H[20] as typeof runUnitBlocks;
   let base = 0,
     failed = false;
   let stage = 0,
     u = 0;
+  // Which unit runs: kind 0 pack, 5 approach speeds, 1 gravity, 2 positions, 3 a colour's rows (from
+  // block `first` of the block table), 4 unpack.
+  let kind = 0,
+    first = 0;
+  const block = (blk: number): void => {
+    if (kind === 0) packRows(A, P, blk, parts);
+    else if (kind === 5) approachRows(A, approachParams, null, blk * APPROACH_ROWS, Math.min(rows, (blk + 1) * APPROACH_ROWS));
+    else if (kind === 1 || kind === 2) {
+      const k0 = 1 + blk * BB,
+        k1 = Math.min(nb, k0 + BB);
+      bodyStage(sb, ex, dyn, order, 0, k0, k1, kind === 1 ? 1 : 2, P);
+    } else if (kind === 4) {
+      const k0 = blk * RB_,
+        k1 = Math.min(np, k0 + RB_);
+      unpackRows(A, k0, k1);
+    } else {
+      // A block of colour u's rows.
+      const r0 = bounds[first + blk]!,
+        r1 = bounds[first + blk + 1]!;
+      // Strips: colour 0's block runs its bodies' stage first (gravity before the warm start,
+      // positions before the first relax pass).
+      if (fused && u === 0 && (stage === 1 || (stage === 3 + iters && relax > 0))) {
+        bodyStage(sb, ex, dyn, order, 1, bodyBounds[blk]!, bodyBounds[blk + 1]!, stage === 1 ? 1 : 2, P);
+      }
+      // Warm start (mode 0), or a pass: 1 relax, 3 biased, + 4 on the substep's last pass (it
+      // adds each row's impulse to what the substep delivered).
+      const last = relax === 0 ? stage === 1 + iters : stage === stages - 1;
+      const mode = stage === 1 ? 0 : (stage < 2 + iters ? 3 : 1) + (last ? 4 : 0);
+      rowPass(pk, sb, pair, tot, P, r0, r1, mode);
+    }
+  };
   for (let g = 0; g < units; g++) {
-    // Which unit g is: kind 0 pack, 5 approach speeds, 1 gravity, 2 positions, 3 a colour's rows, 4 unpack.
-    let kind: number,
-      first = 0,
-      count: number;
+    let count: number;
+    first = 0;
     if (g === 0) {
       kind = 0;
       count = parts;
@@ -175,54 +176,9 @@ export function solveColored2D(
       }
     }
     const end = base + count;
-    if (count > 0) {
-      // Wait until every block of the earlier units is done: spin a while, then block.
-      if (!awaitUnit(bar, base, wait, spinMs)) {
-        failed = true;
-        break;
-      }
-      cursor[0] = 0;
-      cursor[1] = 0;
-      for (
-        let blk = claimNext(claim, base, count, part, threads, cursor);
-        blk >= 0;
-        blk = claimNext(claim, base, count, part, threads, cursor)
-      ) {
-        try {
-          if (kind === 0) packRows(A, P, blk, parts);
-          else if (kind === 5) approachRows(A, approachParams, null, blk * APPROACH_ROWS, Math.min(rows, (blk + 1) * APPROACH_ROWS));
-          else if (kind === 1 || kind === 2) {
-            const k0 = 1 + blk * BB,
-              k1 = Math.min(nb, k0 + BB);
-            bodyStage(sb, ex, dyn, order, 0, k0, k1, kind === 1 ? 1 : 2, P);
-          } else if (kind === 4) {
-            const k0 = blk * RB_,
-              k1 = Math.min(np, k0 + RB_);
-            unpackRows(A, k0, k1);
-          } else {
-            // A block of colour u's rows.
-            const r0 = bounds[first + blk]!,
-              r1 = bounds[first + blk + 1]!;
-            // Strips: colour 0's block runs its bodies' stage first (gravity before the warm start,
-            // positions before the first relax pass).
-            if (fused && u === 0 && (stage === 1 || (stage === 3 + iters && relax > 0))) {
-              bodyStage(sb, ex, dyn, order, 1, bodyBounds[blk]!, bodyBounds[blk + 1]!, stage === 1 ? 1 : 2, P);
-            }
-            // Warm start (mode 0), or a pass: 1 relax, 3 biased, + 4 on the substep's last pass (it
-            // adds each row's impulse to what the substep delivered).
-            const last = relax === 0 ? stage === 1 + iters : stage === stages - 1;
-            const mode = stage === 1 ? 0 : (stage < 2 + iters ? 3 : 1) + (last ? 4 : 0);
-            rowPass(pk, sb, pair, tot, P, r0, r1, mode);
-          }
-        } catch (e) {
-          // Let the other threads out of their waits, then report this one's error.
-          Atomics.store(bar, 2, 1);
-          Atomics.notify(bar, 1);
-          throw e;
-        }
-        // Done: the last block of a unit wakes the threads waiting to start the next.
-        if (Atomics.add(bar, 1, 1) + 1 === end) Atomics.notify(bar, 1);
-      }
+    if (count > 0 && !runUnit(unit, base, count, block)) {
+      failed = true;
+      break;
     }
     base = end;
     // Next unit: advance (stage, colour, substep) past the packing and the approach speeds.
@@ -310,25 +266,25 @@ export function coloredPack2D(A: KernelArray[], P: Float64Array, blk: number, pa
     if (first) {
       k = offsets[o0 + c]!;
       offsets[o0 + c] = k + 1;
-      pair[2 * k] = IA[i]! * BS2_STRIDE;
-      pair[2 * k + 1] = IB[i]! * BS2_STRIDE;
+      pair[2 * k] = IA[i]! * BS.BS2_STRIDE;
+      pair[2 * k + 1] = IB[i]! * BS.BS2_STRIDE;
       tot[k] = 0;
       row[k] = i;
       slot[i] = k;
     } else k = slot[i]!;
-    const o = k * PACK_STRIDE;
-    pk[o + PK_NX] = NX[i]!;
-    pk[o + PK_NY] = NY[i]!;
-    pk[o + PK_RA] = RA[i]!;
-    pk[o + PK_RB] = RB[i]!;
-    pk[o + PK_SEPARATION] = S0[i]!;
-    pk[o + PK_NORMAL_MASS] = NM[i]!;
-    pk[o + PK_TANGENT_MASS] = TM[i]!;
-    pk[o + PK_FRICTION] = FB[i]!;
-    pk[o + PK_NORMAL_IMPULSE] = LN[i]!;
-    pk[o + PK_TANGENT_IMPULSE] = LT[i]!;
-    pk[o + PK_A_FIXED] = RP[i]!;
-    pk[o + PK_MAX_NORMAL_IMPULSE] = 0;
+    const o = k * PACK.PACK_STRIDE;
+    pk[o + PACK.PK_NX] = NX[i]!;
+    pk[o + PACK.PK_NY] = NY[i]!;
+    pk[o + PACK.PK_RA] = RA[i]!;
+    pk[o + PACK.PK_RB] = RB[i]!;
+    pk[o + PACK.PK_SEPARATION] = S0[i]!;
+    pk[o + PACK.PK_NORMAL_MASS] = NM[i]!;
+    pk[o + PACK.PK_TANGENT_MASS] = TM[i]!;
+    pk[o + PACK.PK_FRICTION] = FB[i]!;
+    pk[o + PACK.PK_NORMAL_IMPULSE] = LN[i]!;
+    pk[o + PACK.PK_TANGENT_IMPULSE] = LT[i]!;
+    pk[o + PACK.PK_A_FIXED] = RP[i]!;
+    pk[o + PACK.PK_MAX_NORMAL_IMPULSE] = 0;
   }
 }
 
@@ -358,11 +314,11 @@ export function coloredUnpack2D(A: KernelArray[], k0: number, k1: number): void 
   const tot = A[SOLVE.TOT] as Float64Array,
     row = A[SOLVE.ROW] as Int32Array;
   for (let k = k0; k < k1; k++) {
-    const o = k * PACK_STRIDE,
+    const o = k * PACK.PACK_STRIDE,
       i = row[k]!;
-    LN[i] = pk[o + PK_NORMAL_IMPULSE]!;
-    LT[i] = pk[o + PK_TANGENT_IMPULSE]!;
-    MAXN[i] = pk[o + PK_MAX_NORMAL_IMPULSE]!;
+    LN[i] = pk[o + PACK.PK_NORMAL_IMPULSE]!;
+    LT[i] = pk[o + PACK.PK_TANGENT_IMPULSE]!;
+    MAXN[i] = pk[o + PACK.PK_MAX_NORMAL_IMPULSE]!;
     TOT[i] = tot[k]!;
   }
 }
@@ -390,18 +346,19 @@ export function coloredBodies2D(
     for (let q = q0; q < q1; q++) {
       const k = ordered === 1 ? order[q]! : q;
       if (dyn[k] !== 1) continue;
-      const o = k * BS2_STRIDE;
-      sb[o + BS2_VX] = sb[o + BS2_VX]! + gx;
-      sb[o + BS2_VY] = sb[o + BS2_VY]! + gy;
+      const o = k * BS.BS2_STRIDE;
+      sb[o + BS.BS2_VX] = sb[o + BS.BS2_VX]! + gx;
+      sb[o + BS.BS2_VY] = sb[o + BS.BS2_VY]! + gy;
     }
   } else {
     const hs = P[SOLVE.HS]!;
     for (let q = q0; q < q1; q++) {
       const k = ordered === 1 ? order[q]! : q,
-        o = k * BS2_STRIDE;
-      sb[o + BS2_DX] = sb[o + BS2_DX]! + sb[o + BS2_VX]! * hs;
-      sb[o + BS2_DY] = sb[o + BS2_DY]! + sb[o + BS2_VY]! * hs;
-      if (sb[o + BS2_INV_INERTIA]! > 0) ex[k * BX_STRIDE + BX_ROT_Z] = ex[k * BX_STRIDE + BX_ROT_Z]! + sb[o + BS2_W]! * hs;
+        o = k * BS.BS2_STRIDE;
+      sb[o + BS.BS2_DX] = sb[o + BS.BS2_DX]! + sb[o + BS.BS2_VX]! * hs;
+      sb[o + BS.BS2_DY] = sb[o + BS.BS2_DY]! + sb[o + BS.BS2_VY]! * hs;
+      if (sb[o + BS.BS2_INV_INERTIA]! > 0)
+        ex[k * BS.BX_STRIDE + BS.BX_ROT_Z] = ex[k * BS.BX_STRIDE + BS.BX_ROT_Z]! + sb[o + BS.BS2_W]! * hs;
     }
   }
 }
@@ -424,26 +381,26 @@ export function coloredRows2D(
 ): void {
   if (mode === 0) {
     for (let k = r0; k < r1; k++) {
-      const o = k * PACK_STRIDE;
-      const ln = pk[o + PK_NORMAL_IMPULSE]!,
-        lt = pk[o + PK_TANGENT_IMPULSE]!;
+      const o = k * PACK.PACK_STRIDE;
+      const ln = pk[o + PACK.PK_NORMAL_IMPULSE]!,
+        lt = pk[o + PACK.PK_TANGENT_IMPULSE]!;
       if (ln === 0 && lt === 0) continue;
       const a = pair[2 * k]!,
         bb = pair[2 * k + 1]!;
-      sb[a + BS2_PUSHED] = 1;
-      sb[bb + BS2_PUSHED] = 1;
-      const nx = pk[o + PK_NX]!,
-        ny = pk[o + PK_NY]!;
+      sb[a + BS.BS2_PUSHED] = 1;
+      sb[bb + BS.BS2_PUSHED] = 1;
+      const nx = pk[o + PACK.PK_NX]!,
+        ny = pk[o + PACK.PK_NY]!;
       const Px = ln * nx - lt * ny,
         Py = ln * ny + lt * nx;
-      const imA = sb[a + BS2_INV_MASS]!,
-        imB = sb[bb + BS2_INV_MASS]!;
-      sb[a + BS2_VX] = sb[a + BS2_VX]! - imA * Px;
-      sb[a + BS2_VY] = sb[a + BS2_VY]! - imA * Py;
-      sb[bb + BS2_VX] = sb[bb + BS2_VX]! + imB * Px;
-      sb[bb + BS2_VY] = sb[bb + BS2_VY]! + imB * Py;
-      sb[a + BS2_W] = sb[a + BS2_W]! - sb[a + BS2_INV_INERTIA]! * pk[o + PK_RA]! * lt;
-      sb[bb + BS2_W] = sb[bb + BS2_W]! - sb[bb + BS2_INV_INERTIA]! * pk[o + PK_RB]! * lt;
+      const imA = sb[a + BS.BS2_INV_MASS]!,
+        imB = sb[bb + BS.BS2_INV_MASS]!;
+      sb[a + BS.BS2_VX] = sb[a + BS.BS2_VX]! - imA * Px;
+      sb[a + BS.BS2_VY] = sb[a + BS.BS2_VY]! - imA * Py;
+      sb[bb + BS.BS2_VX] = sb[bb + BS.BS2_VX]! + imB * Px;
+      sb[bb + BS.BS2_VY] = sb[bb + BS.BS2_VY]! + imB * Py;
+      sb[a + BS.BS2_W] = sb[a + BS.BS2_W]! - sb[a + BS.BS2_INV_INERTIA]! * pk[o + PACK.PK_RA]! * lt;
+      sb[bb + BS.BS2_W] = sb[bb + BS.BS2_W]! - sb[bb + BS.BS2_INV_INERTIA]! * pk[o + PACK.PK_RB]! * lt;
     }
     return;
   }
@@ -461,23 +418,23 @@ export function coloredRows2D(
   const useBias = (mode & 2) !== 0,
     total = (mode & 4) !== 0;
   for (let k = r0; k < r1; k++) {
-    const o = k * PACK_STRIDE;
+    const o = k * PACK.PACK_STRIDE;
     const a = pair[2 * k]!,
       bb = pair[2 * k + 1]!;
-    const nx = pk[o + PK_NX]!,
-      ny = pk[o + PK_NY]!;
-    const imA = sb[a + BS2_INV_MASS]!,
-      imB = sb[bb + BS2_INV_MASS]!;
-    let vax = sb[a + BS2_VX]!,
-      vay = sb[a + BS2_VY]!,
-      vbx = sb[bb + BS2_VX]!,
-      vby = sb[bb + BS2_VY]!;
+    const nx = pk[o + PACK.PK_NX]!,
+      ny = pk[o + PACK.PK_NY]!;
+    const imA = sb[a + BS.BS2_INV_MASS]!,
+      imB = sb[bb + BS.BS2_INV_MASS]!;
+    let vax = sb[a + BS.BS2_VX]!,
+      vay = sb[a + BS.BS2_VY]!,
+      vbx = sb[bb + BS.BS2_VX]!,
+      vby = sb[bb + BS.BS2_VY]!;
     // The normal impulse's inverse masses and effective mass: a frictionless support row of
     // a relax pass may hold its lower ball (solver/support.ts's holdsLower: lower speed <= upper).
     let jmA = imA,
       jmB = imB,
-      nm = pk[o + PK_NORMAL_MASS]!;
-    if (!useBias && pk[o + PK_FRICTION] === 0 && imA > 0 && imB > 0 && nm > 0) {
+      nm = pk[o + PACK.PK_NORMAL_MASS]!;
+    if (!useBias && pk[o + PACK.PK_FRICTION] === 0 && imA > 0 && imB > 0 && nm > 0) {
       const up = -(downX * nx + downY * ny);
       if (up > supportCos || up < -supportCos) {
         const va = Math.abs(vax * nx + vay * ny),
@@ -489,14 +446,15 @@ export function coloredRows2D(
         }
       }
     }
-    const sep = pk[o + PK_SEPARATION]! + (sb[bb + BS2_DX]! - sb[a + BS2_DX]!) * nx + (sb[bb + BS2_DY]! - sb[a + BS2_DY]!) * ny;
+    const sep =
+      pk[o + PACK.PK_SEPARATION]! + (sb[bb + BS.BS2_DX]! - sb[a + BS.BS2_DX]!) * nx + (sb[bb + BS.BS2_DY]! - sb[a + BS.BS2_DY]!) * ny;
     let bias = 0,
       massScale = 1,
       impulseScale = 0;
     if (sep > 0) {
       bias = sep * invH;
     } else if (useBias) {
-      if (pk[o + PK_A_FIXED] === 1) {
+      if (pk[o + PACK.PK_A_FIXED] === 1) {
         bias = rBias * sep;
         massScale = rMass;
         impulseScale = rImp;
@@ -508,16 +466,16 @@ export function coloredRows2D(
       if (bias < -push) bias = -push;
     }
     const vn = (vbx - vax) * nx + (vby - vay) * ny;
-    const oldN = pk[o + PK_NORMAL_IMPULSE]!;
+    const oldN = pk[o + PACK.PK_NORMAL_IMPULSE]!;
     // A speculative row with no impulse whose gap stays open this substep does nothing (every impulse
     // below is 0), as in solver/contact-solver.ts's solve2D: a fifth of the pass's time in a settled pile.
-    if (sep > 0 && oldN === 0 && vn + bias >= 0 && pk[o + PK_TANGENT_IMPULSE] === 0) continue;
+    if (sep > 0 && oldN === 0 && vn + bias >= 0 && pk[o + PACK.PK_TANGENT_IMPULSE] === 0) continue;
     let lambda = -nm * massScale * (vn + bias) - impulseScale * oldN;
     let newN = oldN + lambda;
     if (newN < 0) newN = 0;
     lambda = newN - oldN;
-    pk[o + PK_NORMAL_IMPULSE] = newN;
-    if (lambda > pk[o + PK_MAX_NORMAL_IMPULSE]!) pk[o + PK_MAX_NORMAL_IMPULSE] = lambda;
+    pk[o + PACK.PK_NORMAL_IMPULSE] = newN;
+    if (lambda > pk[o + PACK.PK_MAX_NORMAL_IMPULSE]!) pk[o + PACK.PK_MAX_NORMAL_IMPULSE] = lambda;
     if (total) tot[k] = tot[k]! + newN;
     let Px = lambda * nx,
       Py = lambda * ny;
@@ -525,35 +483,35 @@ export function coloredRows2D(
     vay -= jmA * Py;
     vbx += jmB * Px;
     vby += jmB * Py;
-    const ra = pk[o + PK_RA]!,
-      rb = pk[o + PK_RB]!;
-    let wa = sb[a + BS2_W]!,
-      wb = sb[bb + BS2_W]!;
+    const ra = pk[o + PACK.PK_RA]!,
+      rb = pk[o + PACK.PK_RB]!;
+    let wa = sb[a + BS.BS2_W]!,
+      wb = sb[bb + BS.BS2_W]!;
     const vt = (vbx - vax) * -ny + (vby - vay) * nx - wb * rb - wa * ra;
-    lambda = -pk[o + PK_TANGENT_MASS]! * vt;
-    const maxF = pk[o + PK_FRICTION]! * newN;
-    const oldT = pk[o + PK_TANGENT_IMPULSE]!;
+    lambda = -pk[o + PACK.PK_TANGENT_MASS]! * vt;
+    const maxF = pk[o + PACK.PK_FRICTION]! * newN;
+    const oldT = pk[o + PACK.PK_TANGENT_IMPULSE]!;
     let newT = oldT + lambda;
     newT = newT < -maxF ? -maxF : newT > maxF ? maxF : newT;
     lambda = newT - oldT;
-    pk[o + PK_TANGENT_IMPULSE] = newT;
+    pk[o + PACK.PK_TANGENT_IMPULSE] = newT;
     Px = -lambda * ny;
     Py = lambda * nx;
     vax -= imA * Px;
     vay -= imA * Py;
     vbx += imB * Px;
     vby += imB * Py;
-    wa -= sb[a + BS2_INV_INERTIA]! * ra * lambda;
-    wb -= sb[bb + BS2_INV_INERTIA]! * rb * lambda;
-    sb[a + BS2_VX] = vax;
-    sb[a + BS2_VY] = vay;
-    sb[a + BS2_W] = wa;
-    sb[bb + BS2_VX] = vbx;
-    sb[bb + BS2_VY] = vby;
-    sb[bb + BS2_W] = wb;
+    wa -= sb[a + BS.BS2_INV_INERTIA]! * ra * lambda;
+    wb -= sb[bb + BS.BS2_INV_INERTIA]! * rb * lambda;
+    sb[a + BS.BS2_VX] = vax;
+    sb[a + BS.BS2_VY] = vay;
+    sb[a + BS.BS2_W] = wa;
+    sb[bb + BS.BS2_VX] = vbx;
+    sb[bb + BS.BS2_VY] = vby;
+    sb[bb + BS.BS2_W] = wb;
     if (newN !== 0 || newT !== 0) {
-      sb[a + BS2_PUSHED] = 1;
-      sb[bb + BS2_PUSHED] = 1;
+      sb[a + BS.BS2_PUSHED] = 1;
+      sb[bb + BS.BS2_PUSHED] = 1;
     }
   }
 }

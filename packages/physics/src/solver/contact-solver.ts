@@ -2,31 +2,7 @@ import { endWokenContacts } from '../collision/events.js';
 import { BodyType } from '../collision/state.js';
 import { isShared, sharedFloat64, sharedLike } from '../threads/pool.js';
 import type { PhysicsWorld } from '../world/options.js';
-import {
-  BS2_DX,
-  BS2_DY,
-  BS2_INV_INERTIA,
-  BS2_STRIDE,
-  BS2_VX,
-  BS2_VY,
-  BS2_W,
-  BS3_DX,
-  BS3_DY,
-  BS3_DZ,
-  BS3_INV_INERTIA,
-  BS3_STRIDE,
-  BS3_VX,
-  BS3_VY,
-  BS3_VZ,
-  BS3_WX,
-  BS3_WY,
-  BS3_WZ,
-  BX_ROT_X,
-  BX_ROT_Y,
-  BX_ROT_Z,
-  BX_STRIDE,
-  IMPACT_STRIDE,
-} from './body-state-layout.js';
+import * as BS from './body-state-layout.js';
 import { withScaledSubsteps } from './contact-scale.js';
 import { finishManifolds, gatherManifoldBodies, prepareManifolds } from './manifold-prepare-2d.js';
 import {
@@ -176,14 +152,14 @@ function solveContacts(world: PhysicsWorld): void {
 function clearBodyImpacts(world: PhysicsWorld): void {
   const cs = world.collision;
   const count = cs.solverBodyCount;
-  if (cs.bodyImpact.length < count * IMPACT_STRIDE)
-    cs.bodyImpact = new Float64Array(Math.max(count * IMPACT_STRIDE, cs.bodyImpact.length * 2));
-  cs.bodyImpact.fill(0, 0, count * IMPACT_STRIDE);
+  if (cs.bodyImpact.length < count * BS.IMPACT_STRIDE)
+    cs.bodyImpact = new Float64Array(Math.max(count * BS.IMPACT_STRIDE, cs.bodyImpact.length * 2));
+  cs.bodyImpact.fill(0, 0, count * BS.IMPACT_STRIDE);
 }
 
 /** Row stride of the packed solver state: 8 in 2D, 12 in 3D (see CollisionState.bodyState). */
 function stride(world: PhysicsWorld): number {
-  return world.dimensions === 2 ? BS2_STRIDE : BS3_STRIDE;
+  return world.dimensions === 2 ? BS.BS2_STRIDE : BS.BS3_STRIDE;
 }
 
 /**
@@ -208,9 +184,9 @@ function gatherBodies(world: PhysicsWorld, families: RowFamilies): void {
   cs.solverBodyCount = count;
 
   const S = stride(world);
-  if (cs.bodyState.length < count * BS3_STRIDE || (shared && !isShared(cs.bodyState))) {
-    const sizeS = Math.max(count * BS3_STRIDE, cs.bodyState.length * 2),
-      sizeE = Math.max(count * BX_STRIDE, cs.bodyExtra.length * 2);
+  if (cs.bodyState.length < count * BS.BS3_STRIDE || (shared && !isShared(cs.bodyState))) {
+    const sizeS = Math.max(count * BS.BS3_STRIDE, cs.bodyState.length * 2),
+      sizeE = Math.max(count * BS.BX_STRIDE, cs.bodyExtra.length * 2);
     cs.bodyState = shared ? sharedFloat64(sizeS) : new Float64Array(sizeS);
     cs.bodyExtra = shared ? sharedFloat64(sizeE) : new Float64Array(sizeE);
   }
@@ -238,9 +214,9 @@ function integrateVelocities(world: PhysicsWorld, hs: number): void {
     if (type[list[k]!] !== BodyType.Dynamic) continue;
     const o = k * S;
     // vx and vy sit at the same offsets in both dimensions.
-    sb[o + BS2_VX] = sb[o + BS2_VX]! + gx;
-    sb[o + BS2_VY] = sb[o + BS2_VY]! + gy;
-    if (S === BS3_STRIDE) sb[o + BS3_VZ] = sb[o + BS3_VZ]! + gz;
+    sb[o + BS.BS2_VX] = sb[o + BS.BS2_VX]! + gx;
+    sb[o + BS.BS2_VY] = sb[o + BS.BS2_VY]! + gy;
+    if (S === BS.BS3_STRIDE) sb[o + BS.BS3_VZ] = sb[o + BS.BS3_VZ]! + gz;
   }
 }
 
@@ -250,25 +226,26 @@ function integratePositions(world: PhysicsWorld, hs: number): void {
   const count = cs.solverBodyCount,
     sb = cs.bodyState,
     ex = cs.bodyExtra;
-  if (stride(world) === BS2_STRIDE) {
+  if (stride(world) === BS.BS2_STRIDE) {
     for (let k = 1; k < count; k++) {
-      const o = k * BS2_STRIDE;
-      sb[o + BS2_DX] = sb[o + BS2_DX]! + sb[o + BS2_VX]! * hs;
-      sb[o + BS2_DY] = sb[o + BS2_DY]! + sb[o + BS2_VY]! * hs;
-      if (sb[o + BS2_INV_INERTIA]! > 0) ex[k * BX_STRIDE + BX_ROT_Z] = ex[k * BX_STRIDE + BX_ROT_Z]! + sb[o + BS2_W]! * hs;
+      const o = k * BS.BS2_STRIDE;
+      sb[o + BS.BS2_DX] = sb[o + BS.BS2_DX]! + sb[o + BS.BS2_VX]! * hs;
+      sb[o + BS.BS2_DY] = sb[o + BS.BS2_DY]! + sb[o + BS.BS2_VY]! * hs;
+      if (sb[o + BS.BS2_INV_INERTIA]! > 0)
+        ex[k * BS.BX_STRIDE + BS.BX_ROT_Z] = ex[k * BS.BX_STRIDE + BS.BX_ROT_Z]! + sb[o + BS.BS2_W]! * hs;
     }
     return;
   }
   for (let k = 1; k < count; k++) {
-    const o = k * BS3_STRIDE;
-    sb[o + BS3_DX] = sb[o + BS3_DX]! + sb[o + BS3_VX]! * hs;
-    sb[o + BS3_DY] = sb[o + BS3_DY]! + sb[o + BS3_VY]! * hs;
-    sb[o + BS3_DZ] = sb[o + BS3_DZ]! + sb[o + BS3_VZ]! * hs;
-    if (sb[o + BS3_INV_INERTIA]! > 0) {
-      const q = k * BX_STRIDE;
-      ex[q + BX_ROT_X] = ex[q + BX_ROT_X]! + sb[o + BS3_WX]! * hs;
-      ex[q + BX_ROT_Y] = ex[q + BX_ROT_Y]! + sb[o + BS3_WY]! * hs;
-      ex[q + BX_ROT_Z] = ex[q + BX_ROT_Z]! + sb[o + BS3_WZ]! * hs;
+    const o = k * BS.BS3_STRIDE;
+    sb[o + BS.BS3_DX] = sb[o + BS.BS3_DX]! + sb[o + BS.BS3_VX]! * hs;
+    sb[o + BS.BS3_DY] = sb[o + BS.BS3_DY]! + sb[o + BS.BS3_VY]! * hs;
+    sb[o + BS.BS3_DZ] = sb[o + BS.BS3_DZ]! + sb[o + BS.BS3_VZ]! * hs;
+    if (sb[o + BS.BS3_INV_INERTIA]! > 0) {
+      const q = k * BS.BX_STRIDE;
+      ex[q + BS.BX_ROT_X] = ex[q + BS.BX_ROT_X]! + sb[o + BS.BS3_WX]! * hs;
+      ex[q + BS.BX_ROT_Y] = ex[q + BS.BX_ROT_Y]! + sb[o + BS.BS3_WY]! * hs;
+      ex[q + BS.BX_ROT_Z] = ex[q + BS.BX_ROT_Z]! + sb[o + BS.BS3_WZ]! * hs;
     }
   }
 }

@@ -1,31 +1,7 @@
 import { type ContactBuffer, ContactKind } from '../collision/contacts.js';
 import type { PhysicsWorld } from '../world/options.js';
-import {
-  BI_CORR_X,
-  BI_CORR_Y,
-  BI_CORR_Z,
-  BI_TIME,
-  BS2_INV_INERTIA,
-  BS2_INV_MASS,
-  BS2_STRIDE,
-  BS2_VX,
-  BS2_VY,
-  BS2_W,
-  BS3_INV_INERTIA,
-  BS3_INV_MASS,
-  BS3_VX,
-  BS3_VY,
-  BS3_VZ,
-  BS3_WX,
-  BS3_WY,
-  BS3_WZ,
-  BX_ROT_X,
-  BX_ROT_Y,
-  BX_ROT_Z,
-  BX_STRIDE,
-  IMPACT_STRIDE,
-} from './body-state-layout.js';
-import { gravitySign } from './impact-motion.js';
+import * as BS from './body-state-layout.js';
+import { ballMotion, faceMotion, motionIO } from './impact-motion.js';
 import { impactScalars, markChanged, sweepIO } from './impact-state.js';
 
 /** One impact of the impact stage (solver/impacts.ts): a contact's state at its time of impact (swept), and the impulse that stops or bounces it. */
@@ -41,9 +17,9 @@ export function fastEnough(sb: Float64Array, buf: ContactBuffer, i: number, S: n
   if (floor === 0) return true;
   const oa = buf.ia[i]! * S,
     ob = buf.ib[i]! * S;
-  const wx = sb[ob + BS2_VX]! - sb[oa + BS2_VX]!,
-    wy = sb[ob + BS2_VY]! - sb[oa + BS2_VY]!,
-    wz = S === BS2_STRIDE ? 0 : sb[ob + BS3_VZ]! - sb[oa + BS3_VZ]!;
+  const wx = sb[ob + BS.BS2_VX]! - sb[oa + BS.BS2_VX]!,
+    wy = sb[ob + BS.BS2_VY]! - sb[oa + BS.BS2_VY]!,
+    wz = S === BS.BS2_STRIDE ? 0 : sb[ob + BS.BS3_VZ]! - sb[oa + BS.BS3_VZ]!;
   const lim = floor - gh;
   return lim <= 0 || wx * wx + wy * wy + wz * wz > lim * lim;
 }
@@ -56,106 +32,78 @@ const hit = new Float64Array(5);
  * into `hit` and returns true if the bodies touch within the step while approaching.
  */
 export function contactState(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number): boolean {
-  const cs = world.collision;
-  const c = world.components;
-  const sb = cs.bodyState,
-    imp = cs.bodyImpact,
-    type = cs.bodyType;
+  const imp = world.collision.bodyImpact;
+  const qa = buf.ia[i]! * BS.IMPACT_STRIDE,
+    qb = buf.ib[i]! * BS.IMPACT_STRIDE;
+  const t0 = Math.max(imp[qa + BS.BI_TIME]!, imp[qb + BS.BI_TIME]!);
+  if (t0 > world.h) return false;
+  const kind = buf.kind[i]!;
+  return kind === ContactKind.Ball || kind === ContactKind.StaticBall ? ballsHit(world, buf, i, S, t0) : faceHit(world, buf, i, S, t0);
+}
+
+/** contactState of ball contact i from t0 (s): the sweep of the balls' relative path from there, refined once for gravity. */
+function ballsHit(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number, t0: number): boolean {
   const h = world.h;
-  const ia = buf.ia[i]!,
-    ib = buf.ib[i]!;
-  const oa = ia * S,
-    ob = ib * S,
-    qa = ia * IMPACT_STRIDE,
-    qb = ib * IMPACT_STRIDE;
-  const a = buf.a[i]!,
-    b = buf.b[i]!,
-    kind = buf.kind[i]!;
-  const is2D = S === BS2_STRIDE;
-  const g = world.gravity;
-  const gr = gravitySign(type, a, b);
-  const ax = gr * g[0]!,
-    ay = gr * g[1]!,
-    az = is2D ? 0 : gr * g[2]!;
-  const wx = sb[ob + BS2_VX]! - sb[oa + BS2_VX]!,
-    wy = sb[ob + BS2_VY]! - sb[oa + BS2_VY]!,
-    wz = is2D ? 0 : sb[ob + BS3_VZ]! - sb[oa + BS3_VZ]!;
-  const t0 = Math.max(imp[qa + BI_TIME]!, imp[qb + BI_TIME]!);
-  if (t0 > h) return false;
-  if (kind === ContactKind.Ball || kind === ContactKind.StaticBall) {
-    const P = c.PreviousPosition,
-      radius = c.Ball.radius;
-    const f = kind === ContactKind.Ball ? a : buf.feature[i]!;
-    const pa = kind === ContactKind.Ball ? P : c.Position;
-    const R = radius[f]! + radius[b]!;
-    // Relative position at t0: r = r0 + d_offsets + w t0 + a t0^2 / 2.
-    let rx = P.x[b]! + imp[qb + BI_CORR_X]! - pa.x[f]! - imp[qa + BI_CORR_X]! + wx * t0 + 0.5 * ax * t0 * t0;
-    let ry = P.y[b]! + imp[qb + BI_CORR_Y]! - pa.y[f]! - imp[qa + BI_CORR_Y]! + wy * t0 + 0.5 * ay * t0 * t0;
-    let rz = is2D ? 0 : P.z[b]! + imp[qb + BI_CORR_Z]! - pa.z[f]! - imp[qa + BI_CORR_Z]! + wz * t0 + 0.5 * az * t0 * t0;
-    let ux = wx + ax * t0,
-      uy = wy + ay * t0,
-      uz = wz + az * t0;
-    const c0 = rx * rx + ry * ry + rz * rz - R * R;
-    let t = 0;
-    if (c0 > 0) {
-      const span = h - t0;
-      const io = sweepIO;
-      io[0] = rx;
-      io[1] = ry;
-      io[2] = rz;
-      io[6] = R;
-      io[7] = span;
-      io[3] = ux;
-      io[4] = uy;
-      io[5] = uz;
+  // Relative position and velocity at t0: r = r0 + d_offsets + w t0 + a t0^2 / 2, u = w + a t0.
+  ballMotion(world, buf, i, S, t0);
+  const io = sweepIO;
+  let rx = io[0]!,
+    ry = io[1]!,
+    rz = io[2]!,
+    ux = io[3]!,
+    uy = io[4]!,
+    uz = io[5]!;
+  const R = io[6]!;
+  const ax = motionIO[0]!,
+    ay = motionIO[1]!,
+    az = motionIO[2]!;
+  const c0 = rx * rx + ry * ry + rz * rz - R * R;
+  let t = 0;
+  if (c0 > 0) {
+    const span = h - t0;
+    io[7] = span;
+    sweep();
+    t = io[8]!;
+    if (t < 0 && (ax !== 0 || ay !== 0 || az !== 0)) {
+      // Gravity bends the relative path: sweep again with the velocity at the middle of the span.
+      io[3] = ux + 0.5 * ax * span;
+      io[4] = uy + 0.5 * ay * span;
+      io[5] = uz + 0.5 * az * span;
       sweep();
       t = io[8]!;
-      if (t < 0 && (ax !== 0 || ay !== 0 || az !== 0)) {
-        // Gravity bends the relative path: sweep again with the velocity at the middle of the span.
-        io[3] = ux + 0.5 * ax * span;
-        io[4] = uy + 0.5 * ay * span;
-        io[5] = uz + 0.5 * az * span;
-        sweep();
-        t = io[8]!;
-      } else if (t >= 0 && (ax !== 0 || ay !== 0 || az !== 0)) {
-        // Refine with the mean velocity over [0, t].
-        io[3] = ux + 0.5 * ax * t;
-        io[4] = uy + 0.5 * ay * t;
-        io[5] = uz + 0.5 * az * t;
-        sweep();
-        const t2 = io[8]!;
-        if (t2 >= 0) t = t2;
-      }
-      if (t < 0) return false;
-      rx += ux * t + 0.5 * ax * t * t;
-      ry += uy * t + 0.5 * ay * t * t;
-      rz += uz * t + 0.5 * az * t * t;
-      ux += ax * t;
-      uy += ay * t;
-      uz += az * t;
+    } else if (t >= 0 && (ax !== 0 || ay !== 0 || az !== 0)) {
+      // Refine with the mean velocity over [0, t].
+      io[3] = ux + 0.5 * ax * t;
+      io[4] = uy + 0.5 * ay * t;
+      io[5] = uz + 0.5 * az * t;
+      sweep();
+      const t2 = io[8]!;
+      if (t2 >= 0) t = t2;
     }
-    const d = Math.sqrt(rx * rx + ry * ry + rz * rz);
-    if (!(d > 1e-12 * R)) return false;
-    const nx = rx / d,
-      ny = ry / d,
-      nz = rz / d;
-    const vn = ux * nx + uy * ny + uz * nz;
-    if (!(vn < 0)) return false;
-    return hitAt(t0 + t, nx, ny, nz, vn);
+    if (t < 0) return false;
+    rx += ux * t + 0.5 * ax * t * t;
+    ry += uy * t + 0.5 * ay * t * t;
+    rz += uz * t + 0.5 * az * t * t;
+    ux += ax * t;
+    uy += ay * t;
+    uz += az * t;
   }
-  // Fixed normal: boundary face, plane, segment.
-  const nx = buf.nx[i]!,
-    ny = buf.ny[i]!,
-    nz = buf.nz[i]!;
-  const an = ax * nx + ay * ny + az * nz;
-  const vn0 = wx * nx + wy * ny + wz * nz;
-  const s0 =
-    buf.separation[i]! +
-    (imp[qb + BI_CORR_X]! - imp[qa + BI_CORR_X]!) * nx +
-    (imp[qb + BI_CORR_Y]! - imp[qa + BI_CORR_Y]!) * ny +
-    (imp[qb + BI_CORR_Z]! - imp[qa + BI_CORR_Z]!) * nz;
-  const s = s0 + vn0 * t0 + 0.5 * an * t0 * t0;
-  const v = vn0 + an * t0;
+  const d = Math.sqrt(rx * rx + ry * ry + rz * rz);
+  if (!(d > 1e-12 * R)) return false;
+  const nx = rx / d,
+    ny = ry / d,
+    nz = rz / d;
+  const vn = ux * nx + uy * ny + uz * nz;
+  if (!(vn < 0)) return false;
+  return hitAt(t0 + t, nx, ny, nz, vn);
+}
+
+/** contactState of fixed-normal contact i (boundary face, plane, segment) from t0 (s): the gap's quadratic along the normal. */
+function faceHit(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number, t0: number): boolean {
+  faceMotion(world, buf, i, S, t0);
+  const s = motionIO[0]!,
+    v = motionIO[1]!,
+    an = motionIO[2]!;
   let t = 0;
   if (s > 0) {
     const disc = v * v - 2 * an * s;
@@ -163,11 +111,11 @@ export function contactState(world: PhysicsWorld, buf: ContactBuffer, i: number,
     const den = -v + Math.sqrt(disc);
     if (!(den > 0)) return false;
     t = (2 * s) / den;
-    if (t0 + t > h) return false;
+    if (t0 + t > world.h) return false;
   }
   const vn = v + an * t;
   if (!(vn < 0)) return false;
-  return hitAt(t0 + t, nx, ny, nz, vn);
+  return hitAt(t0 + t, buf.nx[i]!, buf.ny[i]!, buf.nz[i]!, vn);
 }
 
 /** Writes a contact's time of impact t (s), normal n and relative normal velocity vn (m/s) into `hit`; returns true. */
@@ -234,9 +182,9 @@ export function impact(world: PhysicsWorld, buf: ContactBuffer, i: number, S: nu
     ib = buf.ib[i]!;
   const oa = ia * S,
     ob = ib * S;
-  const is2D = S === BS2_STRIDE;
-  const im = is2D ? BS2_INV_MASS : BS3_INV_MASS,
-    iI = is2D ? BS2_INV_INERTIA : BS3_INV_INERTIA;
+  const is2D = S === BS.BS2_STRIDE;
+  const im = is2D ? BS.BS2_INV_MASS : BS.BS3_INV_MASS,
+    iI = is2D ? BS.BS2_INV_INERTIA : BS.BS3_INV_INERTIA;
   const imA = sb[oa + im]!,
     imB = sb[ob + im]!,
     iiA = sb[oa + iI]!,
@@ -263,10 +211,10 @@ export function impact(world: PhysicsWorld, buf: ContactBuffer, i: number, S: nu
     const maxF = mu * J;
     if (is2D) {
       const vt =
-        (sb[ob + BS2_VX]! - sb[oa + BS2_VX]!) * -ny +
-        (sb[ob + BS2_VY]! - sb[oa + BS2_VY]!) * nx -
-        sb[ob + BS2_W]! * rb -
-        sb[oa + BS2_W]! * ra;
+        (sb[ob + BS.BS2_VX]! - sb[oa + BS.BS2_VX]!) * -ny +
+        (sb[ob + BS.BS2_VY]! - sb[oa + BS.BS2_VY]!) * nx -
+        sb[ob + BS.BS2_W]! * rb -
+        sb[oa + BS.BS2_W]! * ra;
       let lt = -tm * vt;
       lt = lt < -maxF ? -maxF : lt > maxF ? maxF : lt;
       Px += -lt * ny;
@@ -289,12 +237,12 @@ export function impact(world: PhysicsWorld, buf: ContactBuffer, i: number, S: nu
       const t2x = ny * t1z - nz * t1y,
         t2y = nz * t1x - nx * t1z,
         t2z = nx * t1y - ny * t1x;
-      const sx = -rb * sb[ob + BS3_WX]! - ra * sb[oa + BS3_WX]!,
-        sy = -rb * sb[ob + BS3_WY]! - ra * sb[oa + BS3_WY]!,
-        sz = -rb * sb[ob + BS3_WZ]! - ra * sb[oa + BS3_WZ]!;
-      const ux = sb[ob + BS3_VX]! - sb[oa + BS3_VX]! + sy * nz - sz * ny,
-        uy = sb[ob + BS3_VY]! - sb[oa + BS3_VY]! + sz * nx - sx * nz,
-        uz = sb[ob + BS3_VZ]! - sb[oa + BS3_VZ]! + sx * ny - sy * nx;
+      const sx = -rb * sb[ob + BS.BS3_WX]! - ra * sb[oa + BS.BS3_WX]!,
+        sy = -rb * sb[ob + BS.BS3_WY]! - ra * sb[oa + BS.BS3_WY]!,
+        sz = -rb * sb[ob + BS.BS3_WZ]! - ra * sb[oa + BS.BS3_WZ]!;
+      const ux = sb[ob + BS.BS3_VX]! - sb[oa + BS.BS3_VX]! + sy * nz - sz * ny,
+        uy = sb[ob + BS.BS3_VY]! - sb[oa + BS.BS3_VY]! + sz * nx - sx * nz,
+        uz = sb[ob + BS.BS3_VZ]! - sb[oa + BS.BS3_VZ]! + sx * ny - sy * nx;
       let l1 = -tm * (ux * t1x + uy * t1y + uz * t1z),
         l2 = -tm * (ux * t2x + uy * t2y + uz * t2z);
       const mag2 = l1 * l1 + l2 * l2;
@@ -320,38 +268,38 @@ export function impact(world: PhysicsWorld, buf: ContactBuffer, i: number, S: nu
       dwb2 = -iiB * rb * cz;
     }
   }
-  const qa = ia * IMPACT_STRIDE,
-    qb = ib * IMPACT_STRIDE;
-  const xa = ia * BX_STRIDE,
-    xb = ib * BX_STRIDE;
+  const qa = ia * BS.IMPACT_STRIDE,
+    qb = ib * BS.IMPACT_STRIDE;
+  const xa = ia * BS.BX_STRIDE,
+    xb = ib * BS.BX_STRIDE;
   // Velocity changes; positions corrected by -dv t (the bodies kept the old velocity until t).
-  sb[oa + BS2_VX] = sb[oa + BS2_VX]! - imA * Px;
-  sb[oa + BS2_VY] = sb[oa + BS2_VY]! - imA * Py;
-  sb[ob + BS2_VX] = sb[ob + BS2_VX]! + imB * Px;
-  sb[ob + BS2_VY] = sb[ob + BS2_VY]! + imB * Py;
-  imp[qa + BI_CORR_X] = imp[qa + BI_CORR_X]! + imA * Px * t;
-  imp[qa + BI_CORR_Y] = imp[qa + BI_CORR_Y]! + imA * Py * t;
-  imp[qb + BI_CORR_X] = imp[qb + BI_CORR_X]! - imB * Px * t;
-  imp[qb + BI_CORR_Y] = imp[qb + BI_CORR_Y]! - imB * Py * t;
+  sb[oa + BS.BS2_VX] = sb[oa + BS.BS2_VX]! - imA * Px;
+  sb[oa + BS.BS2_VY] = sb[oa + BS.BS2_VY]! - imA * Py;
+  sb[ob + BS.BS2_VX] = sb[ob + BS.BS2_VX]! + imB * Px;
+  sb[ob + BS.BS2_VY] = sb[ob + BS.BS2_VY]! + imB * Py;
+  imp[qa + BS.BI_CORR_X] = imp[qa + BS.BI_CORR_X]! + imA * Px * t;
+  imp[qa + BS.BI_CORR_Y] = imp[qa + BS.BI_CORR_Y]! + imA * Py * t;
+  imp[qb + BS.BI_CORR_X] = imp[qb + BS.BI_CORR_X]! - imB * Px * t;
+  imp[qb + BS.BI_CORR_Y] = imp[qb + BS.BI_CORR_Y]! - imB * Py * t;
   if (is2D) {
     if (iiA > 0) {
-      sb[oa + BS2_W] = sb[oa + BS2_W]! + dwa2;
-      ex[xa + BX_ROT_Z] = ex[xa + BX_ROT_Z]! - dwa2 * t;
+      sb[oa + BS.BS2_W] = sb[oa + BS.BS2_W]! + dwa2;
+      ex[xa + BS.BX_ROT_Z] = ex[xa + BS.BX_ROT_Z]! - dwa2 * t;
     }
     if (iiB > 0) {
-      sb[ob + BS2_W] = sb[ob + BS2_W]! + dwb2;
-      ex[xb + BX_ROT_Z] = ex[xb + BX_ROT_Z]! - dwb2 * t;
+      sb[ob + BS.BS2_W] = sb[ob + BS.BS2_W]! + dwb2;
+      ex[xb + BS.BX_ROT_Z] = ex[xb + BS.BX_ROT_Z]! - dwb2 * t;
     }
   } else {
-    sb[oa + BS3_VZ] = sb[oa + BS3_VZ]! - imA * Pz;
-    sb[ob + BS3_VZ] = sb[ob + BS3_VZ]! + imB * Pz;
-    imp[qa + BI_CORR_Z] = imp[qa + BI_CORR_Z]! + imA * Pz * t;
-    imp[qb + BI_CORR_Z] = imp[qb + BI_CORR_Z]! - imB * Pz * t;
+    sb[oa + BS.BS3_VZ] = sb[oa + BS.BS3_VZ]! - imA * Pz;
+    sb[ob + BS.BS3_VZ] = sb[ob + BS.BS3_VZ]! + imB * Pz;
+    imp[qa + BS.BI_CORR_Z] = imp[qa + BS.BI_CORR_Z]! + imA * Pz * t;
+    imp[qb + BS.BI_CORR_Z] = imp[qb + BS.BI_CORR_Z]! - imB * Pz * t;
     if (iiA > 0) spinChange3D(sb, ex, oa, xa, dwa0, dwa1, dwa2, t);
     if (iiB > 0) spinChange3D(sb, ex, ob, xb, dwb0, dwb1, dwb2, t);
   }
-  if (ia !== 0 && imA > 0) imp[qa + BI_TIME] = t;
-  if (imB > 0) imp[qb + BI_TIME] = t;
+  if (ia !== 0 && imA > 0) imp[qa + BS.BI_TIME] = t;
+  if (imB > 0) imp[qb + BS.BI_TIME] = t;
   buf.nx[i] = nx;
   buf.ny[i] = ny;
   buf.nz[i] = nz;
@@ -366,10 +314,10 @@ export function impact(world: PhysicsWorld, buf: ContactBuffer, i: number, S: nu
  * until the time of impact t (s).
  */
 function spinChange3D(sb: Float64Array, ex: Float64Array, o: number, x: number, d0: number, d1: number, d2: number, t: number): void {
-  sb[o + BS3_WX] = sb[o + BS3_WX]! + d0;
-  sb[o + BS3_WY] = sb[o + BS3_WY]! + d1;
-  sb[o + BS3_WZ] = sb[o + BS3_WZ]! + d2;
-  ex[x + BX_ROT_X] = ex[x + BX_ROT_X]! - d0 * t;
-  ex[x + BX_ROT_Y] = ex[x + BX_ROT_Y]! - d1 * t;
-  ex[x + BX_ROT_Z] = ex[x + BX_ROT_Z]! - d2 * t;
+  sb[o + BS.BS3_WX] = sb[o + BS.BS3_WX]! + d0;
+  sb[o + BS.BS3_WY] = sb[o + BS.BS3_WY]! + d1;
+  sb[o + BS.BS3_WZ] = sb[o + BS.BS3_WZ]! + d2;
+  ex[x + BS.BX_ROT_X] = ex[x + BS.BX_ROT_X]! - d0 * t;
+  ex[x + BS.BX_ROT_Y] = ex[x + BS.BX_ROT_Y]! - d1 * t;
+  ex[x + BS.BX_ROT_Z] = ex[x + BS.BX_ROT_Z]! - d2 * t;
 }

@@ -1,8 +1,8 @@
 import { type ContactBuffer, ContactKind } from '../collision/contacts.js';
 import type { PhysicsWorld } from '../world/options.js';
-import { BI_ALONE, BI_CORR_X, BI_CORR_Y, BI_CORR_Z, BS2_STRIDE, BS2_VX, BS2_VY, BS3_VZ, IMPACT_STRIDE } from './body-state-layout.js';
+import { BI_ALONE, BI_CORR_X, BI_CORR_Y, BI_CORR_Z, IMPACT_STRIDE } from './body-state-layout.js';
 import { contactState, sweep } from './impact-contact.js';
-import { gravitySign, latestImpactTime, normalVelocity } from './impact-motion.js';
+import { ballMotion, contactRadius, faceMotion, latestImpactTime, motionIO, normalMotion } from './impact-motion.js';
 import { impactScalars, impactScratch, markChanged, sweepIO } from './impact-state.js';
 import { jointsToSolve } from './row-families.js';
 
@@ -259,19 +259,9 @@ function unclean(imp: Float64Array, k: number): void {
  */
 function linearClosure(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number): number {
   const reach = impactScalars[2]!;
-  const cs = world.collision;
-  const sb = cs.bodyState,
-    type = cs.bodyType,
-    g = world.gravity;
-  const oa = buf.ia[i]! * S,
-    ob = buf.ib[i]! * S;
-  const nx = buf.nx[i]!,
-    ny = buf.ny[i]!,
-    nz = buf.nz[i]!;
-  const vn = normalVelocity(sb, oa, ob, nx, ny, nz, S);
-  const a = buf.a[i]!,
-    b = buf.b[i]!;
-  const an = gravitySign(type, a, b) * (g[0]! * nx + g[1]! * ny + g[2]! * nz);
+  normalMotion(world, buf, i, S);
+  const vn = motionIO[1]!,
+    an = motionIO[2]!;
   return (vn < 0 ? -vn * reach : 0) + (an < 0 ? -an * reach * reach : 0);
 }
 
@@ -301,27 +291,9 @@ function correctionGap(imp: Float64Array, buf: ContactBuffer, i: number): number
  * position corrections make x0 + dx + v t exact only after the latest impact), so it is not swept.
  */
 function ballsMeet(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number): boolean {
-  const span = world.h;
-  const cs = world.collision;
-  const c = world.components;
-  const sb = cs.bodyState,
-    imp = cs.bodyImpact,
-    type = cs.bodyType;
-  const ia = buf.ia[i]!,
-    ib = buf.ib[i]!;
-  const oa = ia * S,
-    ob = ib * S,
-    qa = ia * IMPACT_STRIDE,
-    qb = ib * IMPACT_STRIDE;
-  const a = buf.a[i]!,
-    b = buf.b[i]!,
-    kind = buf.kind[i]!;
-  const is2D = S === BS2_STRIDE;
-  const P = c.PreviousPosition,
-    radius = c.Ball.radius;
-  const f = kind === ContactKind.Ball ? a : buf.feature[i]!;
-  const pa = kind === ContactKind.Ball ? P : c.Position;
-  const R = radius[f]! + radius[b]!;
+  const imp = world.collision.bodyImpact;
+  const qa = buf.ia[i]! * IMPACT_STRIDE,
+    qb = buf.ib[i]! * IMPACT_STRIDE;
   const still =
     imp[qa + BI_CORR_X] === 0 &&
     imp[qa + BI_CORR_Y] === 0 &&
@@ -330,34 +302,29 @@ function ballsMeet(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number
     imp[qb + BI_CORR_Y] === 0 &&
     imp[qb + BI_CORR_Z] === 0;
   const s0 = buf.separation[i]!;
-  const g = world.gravity;
-  const gr = gravitySign(type, a, b);
   if (still && s0 <= 0) {
     // Touching: active if it carries load (warm start), overlaps, approaches (closing more than a
     // rounding-level length within the step), or gravity presses it.
+    const R = contactRadius(world, buf, i);
     if (carriesLoad(world, buf, i) || s0 < -1e-6 * R) return true;
-    const nx = buf.nx[i]!,
-      ny = buf.ny[i]!,
-      nz = buf.nz[i]!;
-    const vn = normalVelocity(sb, oa, ob, nx, ny, nz, S);
-    return vn * world.h < -ROUNDING * R || gr * (g[0]! * nx + g[1]! * ny + g[2]! * nz) < 0;
+    normalMotion(world, buf, i, S);
+    return motionIO[1]! * world.h < -ROUNDING * R || motionIO[2]! < 0;
   }
   // Relative position and velocity at t0, the later of the bodies' latest impacts (0 if none).
   const t0 = latestImpactTime(imp, qa, qb);
-  const ax = gr * g[0]!,
-    ay = gr * g[1]!,
-    az = is2D ? 0 : gr * g[2]!;
-  const wx = sb[ob + BS2_VX]! - sb[oa + BS2_VX]! + ax * t0,
-    wy = sb[ob + BS2_VY]! - sb[oa + BS2_VY]! + ay * t0,
-    wz = is2D ? 0 : sb[ob + BS3_VZ]! - sb[oa + BS3_VZ]! + az * t0;
-  const rx =
-    P.x[b]! + imp[qb + BI_CORR_X]! - pa.x[f]! - imp[qa + BI_CORR_X]! + (sb[ob + BS2_VX]! - sb[oa + BS2_VX]!) * t0 + 0.5 * ax * t0 * t0;
-  const ry =
-    P.y[b]! + imp[qb + BI_CORR_Y]! - pa.y[f]! - imp[qa + BI_CORR_Y]! + (sb[ob + BS2_VY]! - sb[oa + BS2_VY]!) * t0 + 0.5 * ay * t0 * t0;
-  const rz = is2D
-    ? 0
-    : P.z[b]! + imp[qb + BI_CORR_Z]! - pa.z[f]! - imp[qa + BI_CORR_Z]! + (sb[ob + BS3_VZ]! - sb[oa + BS3_VZ]!) * t0 + 0.5 * az * t0 * t0;
-  const rest = span - t0;
+  ballMotion(world, buf, i, S, t0);
+  const io = sweepIO;
+  const rx = io[0]!,
+    ry = io[1]!,
+    rz = io[2]!,
+    wx = io[3]!,
+    wy = io[4]!,
+    wz = io[5]!,
+    R = io[6]!;
+  const ax = motionIO[0]!,
+    ay = motionIO[1]!,
+    az = motionIO[2]!;
+  const rest = world.h - t0;
   const r2 = rx * rx + ry * ry + rz * rz;
   if (r2 <= R * R * (1 + 1e-9)) {
     // Overlapping (the substeps push them apart), or touching and approaching at t0 or by the end, by
@@ -376,12 +343,8 @@ function ballsMeet(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number
   // The gap cannot close faster than |w| + |a| t.
   const gap = Math.sqrt(rx * rx + ry * ry + rz * rz) - R;
   if (Math.sqrt(wx * wx + wy * wy + wz * wz) * rest + 2 * Math.sqrt(hx * hx + hy * hy + hz * hz) * rest < gap) return false;
-  // Mean velocity over the first half of the span and over all of it: either meeting counts.
-  const io = sweepIO;
-  io[0] = rx;
-  io[1] = ry;
-  io[2] = rz;
-  io[6] = R;
+  // Mean velocity over the first half of the span and over all of it: either meeting counts (r and R
+  // are in sweepIO from ballMotion).
   io[7] = rest;
   io[3] = wx + hx;
   io[4] = wy + hy;
@@ -401,36 +364,14 @@ function ballsMeet(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number
  * see a touch that is not there).
  */
 function faceMeets(world: PhysicsWorld, buf: ContactBuffer, i: number, S: number): boolean {
-  const cs = world.collision;
-  const sb = cs.bodyState,
-    imp = cs.bodyImpact,
-    type = cs.bodyType;
-  const ia = buf.ia[i]!,
-    ib = buf.ib[i]!;
-  const oa = ia * S,
-    ob = ib * S,
-    qa = ia * IMPACT_STRIDE,
-    qb = ib * IMPACT_STRIDE;
-  const a = buf.a[i]!,
-    b = buf.b[i]!;
-  const g = world.gravity,
-    h = world.h;
-  const nx = buf.nx[i]!,
-    ny = buf.ny[i]!,
-    nz = buf.nz[i]!;
-  const vn = normalVelocity(sb, oa, ob, nx, ny, nz, S);
-  const an = gravitySign(type, a, b) * (g[0]! * nx + g[1]! * ny + g[2]! * nz);
-  const t0 = latestImpactTime(imp, qa, qb);
-  const s =
-    buf.separation[i]! +
-    (imp[qb + BI_CORR_X]! - imp[qa + BI_CORR_X]!) * nx +
-    (imp[qb + BI_CORR_Y]! - imp[qa + BI_CORR_Y]!) * ny +
-    (imp[qb + BI_CORR_Z]! - imp[qa + BI_CORR_Z]!) * nz +
-    vn * t0 +
-    0.5 * an * t0 * t0;
+  const imp = world.collision.bodyImpact;
+  const t0 = latestImpactTime(imp, buf.ia[i]! * IMPACT_STRIDE, buf.ib[i]! * IMPACT_STRIDE);
+  faceMotion(world, buf, i, S, t0);
+  const s = motionIO[0]!,
+    v = motionIO[1]!,
+    an = motionIO[2]!;
   if (s <= 0) return true;
-  const v = vn + an * t0,
-    rest = h - t0;
+  const rest = world.h - t0;
   // Smallest s over [t0, h]: at the end, or where v + a_n t = 0 if that falls inside.
   const tm = an > 0 && v < 0 ? Math.min(-v / an, rest) : rest;
   return s + v * tm + 0.5 * an * tm * tm <= 0 || s + v * rest + 0.5 * an * rest * rest <= 0;

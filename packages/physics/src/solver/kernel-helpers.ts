@@ -10,7 +10,15 @@ import { coloredBodies2D, coloredPack2D, coloredRows2D, coloredUnpack2D } from '
 import { prepareRowMasses, prepareRowWarmStart } from './prepare-contacts-kernel.js';
 import { restitutionCap, restitutionTarget } from './restitution.js';
 import { rigidPartner } from './rigid-partner.js';
-import { approachSpeeds, containBodies, deepestRow, finishBodyRows, restitutionRows, restitutionTargets } from './stages-kernel.js';
+import {
+  approachSpeeds,
+  containBodies,
+  deepestRow,
+  finishBodyRows,
+  restitutionRows,
+  restitutionTargets,
+  runUnitBlocks,
+} from './stages-kernel.js';
 import { stripLayout2D } from './strip-plan-kernel.js';
 import { stripCut2D } from './strips-kernel.js';
 
@@ -27,7 +35,8 @@ import { stripCut2D } from './strips-kernel.js';
  * (math/quaternion.ts, for finishBodies' 3D orientations); 16 awaitBlocks (block-claim.ts: a thread's
  * wait for the next unit, for the kernels of 9); 17 and 18 the restitution stage's one definition
  * (solver/restitution.ts: target and cap, for restitutionTargets); 19 rigidPartner (solver/rigid-partner.ts:
- * a row's softness rule, for prepareRowMasses). A kernel's hot loops live here when the kernel runs
+ * a row's softness rule, for prepareRowMasses); 20 runUnitBlocks (solver/stages-kernel.ts: a thread's share of a
+ * unit's blocks, for solveColored2D and restitutionColored). A kernel's hot loops live here when the kernel runs
  * once a step: V8 then compiles the loops as whole functions with full type feedback.
  * @category Threads
  */
@@ -52,4 +61,5 @@ export const KERNEL_HELPERS: readonly KernelHelper[] = /* @__PURE__ */ Object.fr
   restitutionTarget,
   restitutionCap,
   rigidPartner,
+  runUnitBlocks,
 ]);

@@ -19,8 +19,9 @@ export const MR_BODY_B = 1;
  * A solver index read from a row is masked with this (2^25 - 1): the indices are below a world's
  * capacity + 1 (MAX_CAPACITY, 2^24, at most), so the mask changes none, and V8, knowing the range, computes
  * the body offsets (index times a stride, plus a field) in 32-bit integers without overflow checks.
+ * Written in decimal: scripts/build.mjs isConstantModule reads decimal numbers only.
  */
-export const MR_BODY_MASK = 0x1ffffff;
+export const MR_BODY_MASK = 33554431;
 /** Unit normal from A to B, x. */
 export const MR_NX = 2;
 /** Unit normal from A to B, y. */

@@ -4,52 +4,10 @@ import { keepWhileAsleep, pushEvent, resumeAfterSleep } from '../collision/event
 import { MAX_MANIFOLDS } from '../collision/manifold-limits-2d.js';
 import { findPrevious, type ManifoldBuffer, rotateManifolds, type ShapeCollisionState } from '../collision/manifolds-2d.js';
 import type { PhysicsWorld } from '../world/options.js';
-import {
-  BS2_INV_INERTIA,
-  BS2_INV_MASS,
-  BS2_STRIDE,
-  BS2_VX,
-  BS2_VY,
-  BS2_W,
-  BX_BASE_X,
-  BX_BASE_Y,
-  BX_ROT_Z,
-  BX_STRIDE,
-} from './body-state-layout.js';
+import * as BS from './body-state-layout.js';
 import { effectiveMass, prepareContactSoftness } from './contact-point.js';
 import { CP_NORMAL_MASS, CP_SEPARATION } from './contact-point-layout.js';
-import {
-  MP_MAX_NORMAL_IMPULSE,
-  MP_NORMAL_IMPULSE,
-  MP_RELATIVE_VELOCITY,
-  MP_RNA,
-  MP_RNB,
-  MP_RTA,
-  MP_RTB,
-  MP_STRIDE,
-  MP_TANGENT_IMPULSE,
-  MP_TANGENT_MASS,
-  MP_TOTAL_NORMAL_IMPULSE,
-  MR_B11,
-  MR_B12,
-  MR_B22,
-  MR_BLOCK_VALID,
-  MR_BODY_A,
-  MR_BODY_B,
-  MR_FRICTION_BOUND,
-  MR_K11,
-  MR_K12,
-  MR_K22,
-  MR_NX,
-  MR_NY,
-  MR_POINT_COUNT,
-  MR_POINT0,
-  MR_RESTITUTION,
-  MR_ROLLING,
-  MR_ROLLING_IMPULSE,
-  MR_ROLLING_MASS,
-  MR_STRIDE,
-} from './manifold-layout-2d.js';
+import * as M2 from './manifold-layout-2d.js';
 import { atLeast } from './manifold-rows-2d.js';
 import { joinSolverBodies } from './solver-bodies.js';
 
@@ -128,13 +86,13 @@ export function prepareManifolds(world: PhysicsWorld): void {
   st.angleBase = atLeast(st.angleBase, count);
   const ex = cs.bodyExtra,
     base = st.angleBase;
-  for (let k = 1; k < count; k++) base[k] = ex[k * BX_STRIDE + BX_ROT_Z]!;
+  for (let k = 1; k < count; k++) base[k] = ex[k * BS.BX_STRIDE + BS.BX_ROT_Z]!;
   base[0] = 0;
   if (n === 0) return;
   const set = cs.settings;
   const hs = world.h / set.solverSubsteps;
   prepareContactSoftness(st.softness, set, hs);
-  const R = atLeast(st.solverRows, n * MR_STRIDE);
+  const R = atLeast(st.solverRows, n * M2.MR_STRIDE);
   st.solverRows = R;
   prepareRows(world, R, n);
   pruneDormant(world);
@@ -196,34 +154,34 @@ function prepareRows(world: PhysicsWorld, R: Float64Array, n: number): void {
   // The last pair's previous row less its own row (see previousRow).
   let shift = 0;
   for (let i = 0; i < n; i++) {
-    const r = i * MR_STRIDE;
+    const r = i * M2.MR_STRIDE;
     const ea = shapeA[i]!,
       eb = shapeB[i]!;
     const ka = IA[i]!,
       kb = IB[i]!;
-    const oa = ka * BS2_STRIDE,
-      ob = kb * BS2_STRIDE;
-    const mA = sb[oa + BS2_INV_MASS]!,
-      iA = sb[oa + BS2_INV_INERTIA]!,
-      mB = sb[ob + BS2_INV_MASS]!,
-      iB = sb[ob + BS2_INV_INERTIA]!;
+    const oa = ka * BS.BS2_STRIDE,
+      ob = kb * BS.BS2_STRIDE;
+    const mA = sb[oa + BS.BS2_INV_MASS]!,
+      iA = sb[oa + BS.BS2_INV_INERTIA]!,
+      mB = sb[ob + BS.BS2_INV_MASS]!,
+      iB = sb[ob + BS.BS2_INV_INERTIA]!;
     const nx = NX[i]!,
       ny = NY[i]!;
     const m = points[i]!;
-    R[r + MR_BODY_A] = ka;
-    R[r + MR_BODY_B] = kb;
-    R[r + MR_NX] = nx;
-    R[r + MR_NY] = ny;
-    R[r + MR_POINT_COUNT] = m;
+    R[r + M2.MR_BODY_A] = ka;
+    R[r + M2.MR_BODY_B] = kb;
+    R[r + M2.MR_NX] = nx;
+    R[r + M2.MR_NY] = ny;
+    R[r + M2.MR_POINT_COUNT] = m;
     // Materials: Box2D's mixing (the bouncier surface wins, friction is the geometric mean).
     const ra = ea < 0 ? box.restitution : eM[ea]!,
       fa = ea < 0 ? box.friction : fM[ea]!,
       sa = ea < 0 ? box.staticFriction : sM[ea]!;
     const mu = Math.sqrt(fa * fM[eb]!),
       mus = Math.sqrt(sa * sM[eb]!);
-    R[r + MR_RESTITUTION] = Math.max(ra, eM[eb]!);
-    R[r + MR_ROLLING] = rollingOf(S, buf, i, ea, eb);
-    R[r + MR_ROLLING_MASS] = effectiveMass(iA + iB);
+    R[r + M2.MR_RESTITUTION] = Math.max(ra, eM[eb]!);
+    R[r + M2.MR_ROLLING] = rollingOf(S, buf, i, ea, eb);
+    R[r + M2.MR_ROLLING_MASS] = effectiveMass(iA + iB);
     stampA[i] = ea > 0 ? stamp[ea]! : 0;
     stampB[i] = stamp[eb]!;
     let j = previousRow(st, i + shift, ea, eb);
@@ -242,23 +200,23 @@ function prepareRows(world: PhysicsWorld, R: Float64Array, n: number): void {
       spawnedB = src.stampB[js] === stampB[i],
       rolled = src.rollingImpulse[js]!;
     if (j >= 0 && !(spawnedA && spawnedB)) j = -1;
-    R[r + MR_ROLLING_IMPULSE] = j >= 0 ? rolled : 0;
-    const vax = sb[oa + BS2_VX]!,
-      vay = sb[oa + BS2_VY]!,
-      wa = sb[oa + BS2_W]!,
-      vbx = sb[ob + BS2_VX]!,
-      vby = sb[ob + BS2_VY]!,
-      wb = sb[ob + BS2_W]!;
-    const ea6 = ka * BX_STRIDE,
-      eb6 = kb * BX_STRIDE;
-    const offAx = ka === 0 ? 0 : ex[ea6 + BX_BASE_X]! - ox[list[ka]!]!,
-      offAy = ka === 0 ? 0 : ex[ea6 + BX_BASE_Y]! - oy[list[ka]!]!;
-    const offBx = kb === 0 ? 0 : ex[eb6 + BX_BASE_X]! - ox[list[kb]!]!,
-      offBy = kb === 0 ? 0 : ex[eb6 + BX_BASE_Y]! - oy[list[kb]!]!;
+    R[r + M2.MR_ROLLING_IMPULSE] = j >= 0 ? rolled : 0;
+    const vax = sb[oa + BS.BS2_VX]!,
+      vay = sb[oa + BS.BS2_VY]!,
+      wa = sb[oa + BS.BS2_W]!,
+      vbx = sb[ob + BS.BS2_VX]!,
+      vby = sb[ob + BS.BS2_VY]!,
+      wb = sb[ob + BS.BS2_W]!;
+    const ea6 = ka * BS.BX_STRIDE,
+      eb6 = kb * BS.BX_STRIDE;
+    const offAx = ka === 0 ? 0 : ex[ea6 + BS.BX_BASE_X]! - ox[list[ka]!]!,
+      offAy = ka === 0 ? 0 : ex[ea6 + BS.BX_BASE_Y]! - oy[list[ka]!]!;
+    const offBx = kb === 0 ? 0 : ex[eb6 + BS.BX_BASE_X]! - ox[list[kb]!]!,
+      offBy = kb === 0 ? 0 : ex[eb6 + BS.BX_BASE_Y]! - oy[list[kb]!]!;
     let vtMax = 0;
     for (let p = 0; p < m; p++) {
       const q = 2 * i + p,
-        o = r + MR_POINT0 + p * MP_STRIDE;
+        o = r + M2.MR_POINT0 + p * M2.MP_STRIDE;
       const rax = RAX[q]!,
         ray = RAY[q]!,
         rbx = RBX[q]!,
@@ -286,22 +244,22 @@ function prepareRows(world: PhysicsWorld, R: Float64Array, n: number): void {
         lt0 = src.tangentImpulse[wq]!;
       const ln = w >= 0 ? ln0 : 0,
         lt = w >= 0 ? lt0 : 0;
-      R[o + MP_RNA] = rnA;
-      R[o + MP_RNB] = rnB;
-      R[o + MP_RTA] = rtA;
-      R[o + MP_RTB] = rtB;
+      R[o + M2.MP_RNA] = rnA;
+      R[o + M2.MP_RNB] = rnB;
+      R[o + M2.MP_RTA] = rtA;
+      R[o + M2.MP_RTB] = rtB;
       R[o + CP_SEPARATION] = sep;
       R[o + CP_NORMAL_MASS] = effectiveMass(kn);
-      R[o + MP_TANGENT_MASS] = effectiveMass(kt);
-      R[o + MP_NORMAL_IMPULSE] = ln;
-      R[o + MP_TANGENT_IMPULSE] = lt;
-      R[o + MP_MAX_NORMAL_IMPULSE] = 0;
-      R[o + MP_TOTAL_NORMAL_IMPULSE] = 0;
-      R[o + MP_RELATIVE_VELOCITY] = vn;
+      R[o + M2.MP_TANGENT_MASS] = effectiveMass(kt);
+      R[o + M2.MP_NORMAL_IMPULSE] = ln;
+      R[o + M2.MP_TANGENT_IMPULSE] = lt;
+      R[o + M2.MP_MAX_NORMAL_IMPULSE] = 0;
+      R[o + M2.MP_TOTAL_NORMAL_IMPULSE] = 0;
+      R[o + M2.MP_RELATIVE_VELOCITY] = vn;
     }
-    R[r + MR_FRICTION_BOUND] = vtMax < stick ? Math.max(mus, mu) : mu;
+    R[r + M2.MR_FRICTION_BOUND] = vtMax < stick ? Math.max(mus, mu) : mu;
     if (m === 2) prepareBlock(R, r, mA, iA, mB, iB);
-    else R[r + MR_BLOCK_VALID] = 0;
+    else R[r + M2.MR_BLOCK_VALID] = 0;
   }
 }
 
@@ -312,13 +270,13 @@ function prepareRows(world: PhysicsWorld, R: Float64Array, n: number): void {
  * (what the solve reads), if the rows are not nearly parallel; else the row's block is marked invalid.
  */
 function prepareBlock(R: Float64Array, r: number, mA: number, iA: number, mB: number, iB: number): void {
-  R[r + MR_BLOCK_VALID] = 0;
-  const o1 = r + MR_POINT0,
-    o2 = o1 + MP_STRIDE;
-  const rn1A = R[o1 + MP_RNA]!,
-    rn1B = R[o1 + MP_RNB]!;
-  const rn2A = R[o2 + MP_RNA]!,
-    rn2B = R[o2 + MP_RNB]!;
+  R[r + M2.MR_BLOCK_VALID] = 0;
+  const o1 = r + M2.MR_POINT0,
+    o2 = o1 + M2.MP_STRIDE;
+  const rn1A = R[o1 + M2.MP_RNA]!,
+    rn1B = R[o1 + M2.MP_RNB]!;
+  const rn2A = R[o2 + M2.MP_RNA]!,
+    rn2B = R[o2 + M2.MP_RNB]!;
   const k11 = mA + mB + iA * rn1A * rn1A + iB * rn1B * rn1B;
   const k22 = mA + mB + iA * rn2A * rn2A + iB * rn2B * rn2B;
   const k12 = mA + mB + iA * rn1A * rn2A + iB * rn1B * rn2B;
@@ -330,13 +288,13 @@ function prepareBlock(R: Float64Array, r: number, mA: number, iA: number, mB: nu
       b12 = -k12 * inv,
       b22 = k11 * inv;
     const back = 1 / (b11 * b22 - b12 * b12);
-    R[r + MR_BLOCK_VALID] = 1;
-    R[r + MR_B11] = b11;
-    R[r + MR_B12] = b12;
-    R[r + MR_B22] = b22;
-    R[r + MR_K11] = b22 * back;
-    R[r + MR_K12] = -b12 * back;
-    R[r + MR_K22] = b11 * back;
+    R[r + M2.MR_BLOCK_VALID] = 1;
+    R[r + M2.MR_B11] = b11;
+    R[r + M2.MR_B12] = b12;
+    R[r + M2.MR_B22] = b22;
+    R[r + M2.MR_K11] = b22 * back;
+    R[r + M2.MR_K12] = -b12 * back;
+    R[r + M2.MR_K22] = b11 * back;
   }
 }
 

@@ -2,55 +2,11 @@ import { MAX_MANIFOLDS } from '../collision/manifold-limits-2d.js';
 import type { ManifoldBuffer } from '../collision/manifolds-2d.js';
 import type { CollisionState } from '../collision/state.js';
 import type { PhysicsWorld } from '../world/options.js';
-import {
-  BS2_DX,
-  BS2_DY,
-  BS2_INV_INERTIA,
-  BS2_INV_MASS,
-  BS2_PUSHED,
-  BS2_STRIDE,
-  BS2_VX,
-  BS2_VY,
-  BS2_W,
-  BX_ROT_Z,
-  BX_STRIDE,
-} from './body-state-layout.js';
+import * as BS from './body-state-layout.js';
 import { storeVelocities2D } from './body-velocities.js';
 import { bouncingList, boundedImpulse, normalBias, normalImpulse, softRow } from './contact-point.js';
 import { CP_NORMAL_MASS, CP_SEPARATION, SN_BIAS, SN_RIGID, SN_RIGID_BIAS, SN_SCALES, SN_SOFT_ROW } from './contact-point-layout.js';
-import {
-  MP_MAX_NORMAL_IMPULSE,
-  MP_NORMAL_IMPULSE,
-  MP_RELATIVE_VELOCITY,
-  MP_RNA,
-  MP_RNB,
-  MP_RTA,
-  MP_RTB,
-  MP_STRIDE,
-  MP_TANGENT_IMPULSE,
-  MP_TANGENT_MASS,
-  MP_TOTAL_NORMAL_IMPULSE,
-  MR_B11,
-  MR_B12,
-  MR_B22,
-  MR_BLOCK_VALID,
-  MR_BODY_A,
-  MR_BODY_B,
-  MR_BODY_MASK,
-  MR_FRICTION_BOUND,
-  MR_K11,
-  MR_K12,
-  MR_K22,
-  MR_NX,
-  MR_NY,
-  MR_POINT_COUNT,
-  MR_POINT0,
-  MR_RESTITUTION,
-  MR_ROLLING,
-  MR_ROLLING_IMPULSE,
-  MR_ROLLING_MASS,
-  MR_STRIDE,
-} from './manifold-layout-2d.js';
+import * as M2 from './manifold-layout-2d.js';
 import { restitutionCap, restitutionImpulse, restitutionTarget } from './restitution.js';
 import { rigidPartner } from './rigid-partner.js';
 
@@ -113,14 +69,14 @@ export function storeManifoldImpulses(cs: CollisionState): void {
  */
 function storeRows(buf: ManifoldBuffer, R: Float64Array, n: number): void {
   for (let i = 0; i < n; i++) {
-    const r = i * MR_STRIDE;
-    buf.rollingImpulse[i] = R[r + MR_ROLLING_IMPULSE]!;
+    const r = i * M2.MR_STRIDE;
+    buf.rollingImpulse[i] = R[r + M2.MR_ROLLING_IMPULSE]!;
     for (let p = 0, m = buf.pointCount[i]!; p < m; p++) {
       const q = 2 * i + p,
-        o = r + MR_POINT0 + p * MP_STRIDE;
-      buf.normalImpulse[q] = R[o + MP_NORMAL_IMPULSE]!;
-      buf.tangentImpulse[q] = R[o + MP_TANGENT_IMPULSE]!;
-      buf.totalNormalImpulse[q] = R[o + MP_TOTAL_NORMAL_IMPULSE]!;
+        o = r + M2.MR_POINT0 + p * M2.MP_STRIDE;
+      buf.normalImpulse[q] = R[o + M2.MP_NORMAL_IMPULSE]!;
+      buf.tangentImpulse[q] = R[o + M2.MP_TANGENT_IMPULSE]!;
+      buf.totalNormalImpulse[q] = R[o + M2.MP_TOTAL_NORMAL_IMPULSE]!;
     }
   }
 }
@@ -136,40 +92,40 @@ export function warmStartManifolds(cs: CollisionState): void {
 /** warmStartManifolds' loop over the first `n` rows of R, on the packed body state sb (see storeRows). */
 function warmStartRows(R: Float64Array, sb: Float64Array, n: number): void {
   for (let i = 0; i < n; i++) {
-    const r = i * MR_STRIDE;
-    const a = (R[r + MR_BODY_A]! & MR_BODY_MASK) * BS2_STRIDE,
-      b = (R[r + MR_BODY_B]! & MR_BODY_MASK) * BS2_STRIDE;
-    const mA = sb[a + BS2_INV_MASS]!,
-      iA = sb[a + BS2_INV_INERTIA]!,
-      mB = sb[b + BS2_INV_MASS]!,
-      iB = sb[b + BS2_INV_INERTIA]!;
-    const nx = R[r + MR_NX]!,
-      ny = R[r + MR_NY]!;
-    let vax = sb[a + BS2_VX]!,
-      vay = sb[a + BS2_VY]!,
-      wa = sb[a + BS2_W]!,
-      vbx = sb[b + BS2_VX]!,
-      vby = sb[b + BS2_VY]!,
-      wb = sb[b + BS2_W]!;
+    const r = i * M2.MR_STRIDE;
+    const a = (R[r + M2.MR_BODY_A]! & M2.MR_BODY_MASK) * BS.BS2_STRIDE,
+      b = (R[r + M2.MR_BODY_B]! & M2.MR_BODY_MASK) * BS.BS2_STRIDE;
+    const mA = sb[a + BS.BS2_INV_MASS]!,
+      iA = sb[a + BS.BS2_INV_INERTIA]!,
+      mB = sb[b + BS.BS2_INV_MASS]!,
+      iB = sb[b + BS.BS2_INV_INERTIA]!;
+    const nx = R[r + M2.MR_NX]!,
+      ny = R[r + M2.MR_NY]!;
+    let vax = sb[a + BS.BS2_VX]!,
+      vay = sb[a + BS.BS2_VY]!,
+      wa = sb[a + BS.BS2_W]!,
+      vbx = sb[b + BS.BS2_VX]!,
+      vby = sb[b + BS.BS2_VY]!,
+      wb = sb[b + BS.BS2_W]!;
     // Each point's normal and friction impulse; whether the row carries an impulse (it pushes its
     // bodies) from the impulses read.
     let carries = false;
-    for (let p = 0, m = R[r + MR_POINT_COUNT]!; p < m; p++) {
-      const o = r + MR_POINT0 + p * MP_STRIDE;
-      const ln = R[o + MP_NORMAL_IMPULSE]!,
-        lt = R[o + MP_TANGENT_IMPULSE]!;
+    for (let p = 0, m = R[r + M2.MR_POINT_COUNT]!; p < m; p++) {
+      const o = r + M2.MR_POINT0 + p * M2.MP_STRIDE;
+      const ln = R[o + M2.MP_NORMAL_IMPULSE]!,
+        lt = R[o + M2.MP_TANGENT_IMPULSE]!;
       const Px = ln * nx - lt * ny,
         Py = ln * ny + lt * nx;
       // r x (ln n + lt t) = ln (r x n) + lt (r x t).
-      wa -= iA * (ln * R[o + MP_RNA]! + lt * R[o + MP_RTA]!);
+      wa -= iA * (ln * R[o + M2.MP_RNA]! + lt * R[o + M2.MP_RTA]!);
       vax -= mA * Px;
       vay -= mA * Py;
-      wb += iB * (ln * R[o + MP_RNB]! + lt * R[o + MP_RTB]!);
+      wb += iB * (ln * R[o + M2.MP_RNB]! + lt * R[o + M2.MP_RTB]!);
       vbx += mB * Px;
       vby += mB * Py;
       carries = carries || ln !== 0 || lt !== 0;
     }
-    const lr = R[r + MR_ROLLING_IMPULSE]!;
+    const lr = R[r + M2.MR_ROLLING_IMPULSE]!;
     wa -= iA * lr;
     wb += iB * lr;
     storeVelocities2D(sb, a, b, vax, vay, wa, vbx, vby, wb);
@@ -177,8 +133,8 @@ function warmStartRows(R: Float64Array, sb: Float64Array, n: number): void {
     // made only when a row carries one would not run in a world's first step (every contact new, no
     // impulse yet), and code V8 compiled then would be thrown away at the first row that does.
     const carry = carries || lr !== 0 ? 1 : 0;
-    sb[a + BS2_PUSHED] = sb[a + BS2_PUSHED]! || carry;
-    sb[b + BS2_PUSHED] = sb[b + BS2_PUSHED]! || carry;
+    sb[a + BS.BS2_PUSHED] = sb[a + BS.BS2_PUSHED]! || carry;
+    sb[b + BS.BS2_PUSHED] = sb[b + BS.BS2_PUSHED]! || carry;
   }
 }
 
@@ -193,12 +149,12 @@ function warmStartRows(R: Float64Array, sb: Float64Array, n: number): void {
  * the two points' impulses symmetric, and the column stands.
  */
 function solveBlock(R: Float64Array, r: number, c1: number, c2: number): boolean {
-  const K11 = R[r + MR_K11]!,
-    K22 = R[r + MR_K22]!,
-    K12 = R[r + MR_K12]!;
-  const B11 = R[r + MR_B11]!,
-    B12 = R[r + MR_B12]!,
-    B22 = R[r + MR_B22]!;
+  const K11 = R[r + M2.MR_K11]!,
+    K22 = R[r + M2.MR_K22]!,
+    K12 = R[r + M2.MR_K12]!;
+  const B11 = R[r + M2.MR_B11]!,
+    B12 = R[r + M2.MR_B12]!,
+    B22 = R[r + M2.MR_B22]!;
   let n1 = -(B11 * c1 + B12 * c2),
     n2 = -(B12 * c1 + B22 * c2);
   let ok = n1 >= 0 && n2 >= 0;
@@ -219,8 +175,8 @@ function solveBlock(R: Float64Array, r: number, c1: number, c2: number): boolean
     ok = c1 >= 0 && c2 >= 0;
   }
   if (ok) {
-    R[r + MR_POINT0 + MP_NORMAL_IMPULSE] = n1;
-    R[r + MR_POINT0 + MP_STRIDE + MP_NORMAL_IMPULSE] = n2;
+    R[r + M2.MR_POINT0 + M2.MP_NORMAL_IMPULSE] = n1;
+    R[r + M2.MR_POINT0 + M2.MP_STRIDE + M2.MP_NORMAL_IMPULSE] = n2;
   }
   return ok;
 }
@@ -232,17 +188,17 @@ function solveBlock(R: Float64Array, r: number, c1: number, c2: number): boolean
  * (w_B - w_A, rad/s). Returns the impulse added, N m s (A gets minus it).
  */
 function solveRolling(R: Float64Array, r: number, total: number, dw: number): number {
-  const old = R[r + MR_ROLLING_IMPULSE]!;
-  const next = boundedImpulse(old, R[r + MR_ROLLING_MASS]!, dw, R[r + MR_ROLLING]! * total);
-  R[r + MR_ROLLING_IMPULSE] = next;
+  const old = R[r + M2.MR_ROLLING_IMPULSE]!;
+  const next = boundedImpulse(old, R[r + M2.MR_ROLLING_MASS]!, dw, R[r + M2.MR_ROLLING]! * total);
+  R[r + M2.MR_ROLLING_IMPULSE] = next;
   return next - old;
 }
 
 /** Adds the normal impulses of the row whose first point starts at `o1` (two points if `two`) to their step totals. */
 function accumulateRow(R: Float64Array, o1: number, two: boolean): void {
-  R[o1 + MP_TOTAL_NORMAL_IMPULSE] = R[o1 + MP_TOTAL_NORMAL_IMPULSE]! + R[o1 + MP_NORMAL_IMPULSE]!;
-  const o2 = o1 + MP_STRIDE;
-  if (two) R[o2 + MP_TOTAL_NORMAL_IMPULSE] = R[o2 + MP_TOTAL_NORMAL_IMPULSE]! + R[o2 + MP_NORMAL_IMPULSE]!;
+  R[o1 + M2.MP_TOTAL_NORMAL_IMPULSE] = R[o1 + M2.MP_TOTAL_NORMAL_IMPULSE]! + R[o1 + M2.MP_NORMAL_IMPULSE]!;
+  const o2 = o1 + M2.MP_STRIDE;
+  if (two) R[o2 + M2.MP_TOTAL_NORMAL_IMPULSE] = R[o2 + M2.MP_TOTAL_NORMAL_IMPULSE]! + R[o2 + M2.MP_NORMAL_IMPULSE]!;
 }
 
 /**
@@ -296,43 +252,43 @@ function solveRows(
   n: number,
 ): void {
   for (let i = 0; i < n; i++) {
-    const r = i * MR_STRIDE;
-    const ia = R[r + MR_BODY_A]! & MR_BODY_MASK,
-      ib = R[r + MR_BODY_B]! & MR_BODY_MASK;
-    const a = ia * BS2_STRIDE,
-      b = ib * BS2_STRIDE;
-    const mA = sb[a + BS2_INV_MASS]!,
-      iA = sb[a + BS2_INV_INERTIA]!,
-      mB = sb[b + BS2_INV_MASS]!,
-      iB = sb[b + BS2_INV_INERTIA]!;
-    let vax = sb[a + BS2_VX]!,
-      vay = sb[a + BS2_VY]!,
-      wa = sb[a + BS2_W]!,
-      vbx = sb[b + BS2_VX]!,
-      vby = sb[b + BS2_VY]!,
-      wb = sb[b + BS2_W]!;
-    const dax = sb[a + BS2_DX]!,
-      day = sb[a + BS2_DY]!,
-      dbx = sb[b + BS2_DX]!,
-      dby = sb[b + BS2_DY]!;
-    const ta = ia === 0 ? 0 : ex[ia * BX_STRIDE + BX_ROT_Z]! - base[ia]!,
-      tb = ib === 0 ? 0 : ex[ib * BX_STRIDE + BX_ROT_Z]! - base[ib]!;
-    const nx = R[r + MR_NX]!,
-      ny = R[r + MR_NY]!;
+    const r = i * M2.MR_STRIDE;
+    const ia = R[r + M2.MR_BODY_A]! & M2.MR_BODY_MASK,
+      ib = R[r + M2.MR_BODY_B]! & M2.MR_BODY_MASK;
+    const a = ia * BS.BS2_STRIDE,
+      b = ib * BS.BS2_STRIDE;
+    const mA = sb[a + BS.BS2_INV_MASS]!,
+      iA = sb[a + BS.BS2_INV_INERTIA]!,
+      mB = sb[b + BS.BS2_INV_MASS]!,
+      iB = sb[b + BS.BS2_INV_INERTIA]!;
+    let vax = sb[a + BS.BS2_VX]!,
+      vay = sb[a + BS.BS2_VY]!,
+      wa = sb[a + BS.BS2_W]!,
+      vbx = sb[b + BS.BS2_VX]!,
+      vby = sb[b + BS.BS2_VY]!,
+      wb = sb[b + BS.BS2_W]!;
+    const dax = sb[a + BS.BS2_DX]!,
+      day = sb[a + BS.BS2_DY]!,
+      dbx = sb[b + BS.BS2_DX]!,
+      dby = sb[b + BS.BS2_DY]!;
+    const ta = ia === 0 ? 0 : ex[ia * BS.BX_STRIDE + BS.BX_ROT_Z]! - base[ia]!,
+      tb = ib === 0 ? 0 : ex[ib * BS.BX_STRIDE + BS.BX_ROT_Z]! - base[ib]!;
+    const nx = R[r + M2.MR_NX]!,
+      ny = R[r + M2.MR_NY]!;
     const rigid = rigidPartner(mA, mB);
     const biasRate = T[SN_BIAS + rigid * (SN_RIGID_BIAS - SN_BIAS)]!,
       scales = SN_SCALES + SN_RIGID * rigid;
-    const two = R[r + MR_POINT_COUNT] === 2;
-    const o1 = r + MR_POINT0,
-      o2 = o1 + MP_STRIDE;
-    const n1a = R[o1 + MP_RNA]!,
-      n1b = R[o1 + MP_RNB]!,
-      t1a = R[o1 + MP_RTA]!,
-      t1b = R[o1 + MP_RTB]!;
-    const n2a = R[o2 + MP_RNA]!,
-      n2b = R[o2 + MP_RNB]!,
-      t2a = R[o2 + MP_RTA]!,
-      t2b = R[o2 + MP_RTB]!;
+    const two = R[r + M2.MR_POINT_COUNT] === 2;
+    const o1 = r + M2.MR_POINT0,
+      o2 = o1 + M2.MP_STRIDE;
+    const n1a = R[o1 + M2.MP_RNA]!,
+      n1b = R[o1 + M2.MP_RNB]!,
+      t1a = R[o1 + M2.MP_RTA]!,
+      t1b = R[o1 + M2.MP_RTB]!;
+    const n2a = R[o2 + M2.MP_RNA]!,
+      n2b = R[o2 + M2.MP_RNB]!,
+      t2a = R[o2 + M2.MP_RTA]!,
+      t2b = R[o2 + M2.MP_RTB]!;
     const dn = (dbx - dax) * nx + (dby - day) * ny;
     const s1 = R[o1 + CP_SEPARATION]! + dn + tb * n1b - ta * n1a;
     const s2 = R[o2 + CP_SEPARATION]! + dn + tb * n2b - ta * n2a;
@@ -346,27 +302,27 @@ function solveRows(
       i1 = T[sel1 + 1]!,
       m2 = T[sel2]!,
       i2 = T[sel2 + 1]!;
-    let l1 = R[o1 + MP_NORMAL_IMPULSE]!,
-      l2 = R[o2 + MP_NORMAL_IMPULSE]!;
+    let l1 = R[o1 + M2.MP_NORMAL_IMPULSE]!,
+      l2 = R[o2 + M2.MP_NORMAL_IMPULSE]!;
     let total = 0;
     let solved = false;
-    if (R[r + MR_BLOCK_VALID] === 1) {
+    if (R[r + M2.MR_BLOCK_VALID] === 1) {
       const dvn = (vbx - vax) * nx + (vby - vay) * ny;
       const vn1 = dvn + wb * n1b - wa * n1a;
       const vn2 = dvn + wb * n2b - wa * n2a;
-      const K11 = R[r + MR_K11]!,
-        K22 = R[r + MR_K22]!,
-        K12 = R[r + MR_K12]!;
+      const K11 = R[r + M2.MR_K11]!,
+        K22 = R[r + M2.MR_K22]!,
+        K12 = R[r + M2.MR_K12]!;
       const c1 = m1 * (vn1 + b1) - (1 - i1) * (K11 * l1 + K12 * l2);
       const c2 = m2 * (vn2 + b2) - (1 - i2) * (K12 * l1 + K22 * l2);
       solved = solveBlock(R, r, c1, c2);
       if (solved) {
-        const n1 = R[o1 + MP_NORMAL_IMPULSE]!,
-          n2 = R[o2 + MP_NORMAL_IMPULSE]!;
+        const n1 = R[o1 + M2.MP_NORMAL_IMPULSE]!,
+          n2 = R[o2 + M2.MP_NORMAL_IMPULSE]!;
         const d1 = n1 - l1,
           d2 = n2 - l2;
-        if (d1 > R[o1 + MP_MAX_NORMAL_IMPULSE]!) R[o1 + MP_MAX_NORMAL_IMPULSE] = d1;
-        if (d2 > R[o2 + MP_MAX_NORMAL_IMPULSE]!) R[o2 + MP_MAX_NORMAL_IMPULSE] = d2;
+        if (d1 > R[o1 + M2.MP_MAX_NORMAL_IMPULSE]!) R[o1 + M2.MP_MAX_NORMAL_IMPULSE] = d1;
+        if (d2 > R[o2 + M2.MP_MAX_NORMAL_IMPULSE]!) R[o2 + M2.MP_MAX_NORMAL_IMPULSE] = d2;
         l1 = n1;
         l2 = n2;
         total = n1 + n2;
@@ -380,7 +336,7 @@ function solveRows(
       }
     }
     for (let p = 0; p < (two ? 2 : 1) && !solved; p++) {
-      const o = o1 + p * MP_STRIDE;
+      const o = o1 + p * M2.MP_STRIDE;
       const na = p === 0 ? n1a : n2a,
         nb = p === 0 ? n1b : n2b;
       const old = p === 0 ? l1 : l2;
@@ -390,7 +346,7 @@ function solveRows(
       if (p === 0) l1 = next;
       else l2 = next;
       total += next;
-      if (dl > R[o + MP_MAX_NORMAL_IMPULSE]!) R[o + MP_MAX_NORMAL_IMPULSE] = dl;
+      if (dl > R[o + M2.MP_MAX_NORMAL_IMPULSE]!) R[o + M2.MP_MAX_NORMAL_IMPULSE] = dl;
       const Px = dl * nx,
         Py = dl * ny;
       vax -= mA * Px;
@@ -400,20 +356,20 @@ function solveRows(
       vby += mB * Py;
       wb += iB * dl * nb;
     }
-    R[o1 + MP_NORMAL_IMPULSE] = l1;
-    if (two) R[o2 + MP_NORMAL_IMPULSE] = l2;
-    const bound = R[r + MR_FRICTION_BOUND]!;
+    R[o1 + M2.MP_NORMAL_IMPULSE] = l1;
+    if (two) R[o2 + M2.MP_NORMAL_IMPULSE] = l2;
+    const bound = R[r + M2.MR_FRICTION_BOUND]!;
     let f1 = 0,
       f2 = 0;
     for (let p = 0; p < (two ? 2 : 1); p++) {
-      const o = o1 + p * MP_STRIDE;
+      const o = o1 + p * M2.MP_STRIDE;
       const la = p === 0 ? t1a : t2a,
         lb = p === 0 ? t1b : t2b;
-      const old = R[o + MP_TANGENT_IMPULSE]!;
+      const old = R[o + M2.MP_TANGENT_IMPULSE]!;
       const vt = (vby - vay) * nx - (vbx - vax) * ny + wb * lb - wa * la;
-      const next = boundedImpulse(old, R[o + MP_TANGENT_MASS]!, vt, bound * (p === 0 ? l1 : l2));
+      const next = boundedImpulse(old, R[o + M2.MP_TANGENT_MASS]!, vt, bound * (p === 0 ? l1 : l2));
       const dl = next - old;
-      R[o + MP_TANGENT_IMPULSE] = next;
+      R[o + M2.MP_TANGENT_IMPULSE] = next;
       if (p === 0) f1 = next;
       else f2 = next;
       const Px = -dl * ny,
@@ -425,20 +381,20 @@ function solveRows(
       vby += mB * Py;
       wb += iB * dl * lb;
     }
-    if (R[r + MR_ROLLING]! > 0) {
+    if (R[r + M2.MR_ROLLING]! > 0) {
       const dl = solveRolling(R, r, total, wb - wa);
       wa -= iA * dl;
       wb += iB * dl;
     }
     storeVelocities2D(sb, a, b, vax, vay, wa, vbx, vby, wb);
-    if (total > 0 || l1 !== 0 || f1 !== 0 || (two && (l2 !== 0 || f2 !== 0)) || R[r + MR_ROLLING_IMPULSE] !== 0) markPushed(sb, a, b);
+    if (total > 0 || l1 !== 0 || f1 !== 0 || (two && (l2 !== 0 || f2 !== 0)) || R[r + M2.MR_ROLLING_IMPULSE] !== 0) markPushed(sb, a, b);
   }
 }
 
 /** Marks the bodies at packed offsets a and b of sb as pushed (see the module comment). */
 function markPushed(sb: Float64Array, a: number, b: number): void {
-  sb[a + BS2_PUSHED] = 1;
-  sb[b + BS2_PUSHED] = 1;
+  sb[a + BS.BS2_PUSHED] = 1;
+  sb[b + BS.BS2_PUSHED] = 1;
 }
 
 /**
@@ -449,8 +405,8 @@ function markPushed(sb: Float64Array, a: number, b: number): void {
 export function accumulateManifoldImpulses(cs: CollisionState): void {
   const R = cs.shapes.solverRows;
   for (let i = 0, n = Math.min(cs.shapes.manifolds.count, MAX_MANIFOLDS); i < n; i++) {
-    const r = i * MR_STRIDE;
-    accumulateRow(R, r + MR_POINT0, R[r + MR_POINT_COUNT] === 2);
+    const r = i * M2.MR_STRIDE;
+    accumulateRow(R, r + M2.MR_POINT0, R[r + M2.MR_POINT_COUNT] === 2);
   }
 }
 
@@ -483,89 +439,93 @@ export function applyManifoldRestitution(world: PhysicsWorld): void {
     const all = pass === 0;
     for (let k = 0, count = all ? n : listed; k < count; k++) {
       const i = all ? k : list[k]!;
-      const r = i * MR_STRIDE;
-      const e = R[r + MR_RESTITUTION]!;
+      const r = i * M2.MR_STRIDE;
+      const e = R[r + M2.MR_RESTITUTION]!;
       if (e === 0) continue;
-      const m = R[r + MR_POINT_COUNT]!;
-      const o1 = r + MR_POINT0,
-        o2 = o1 + MP_STRIDE;
-      const v1 = R[o1 + MP_RELATIVE_VELOCITY]!,
-        v2 = R[o2 + MP_RELATIVE_VELOCITY]!;
-      const t1 = m > 0 && R[o1 + MP_MAX_NORMAL_IMPULSE]! > 0 ? restitutionTarget(e, v1, v1, threshold, elasticThreshold) : -1,
-        t2 = m > 1 && R[o2 + MP_MAX_NORMAL_IMPULSE]! > 0 ? restitutionTarget(e, v2, v2, threshold, elasticThreshold) : -1;
+      const m = R[r + M2.MR_POINT_COUNT]!;
+      const o1 = r + M2.MR_POINT0,
+        o2 = o1 + M2.MP_STRIDE;
+      const v1 = R[o1 + M2.MP_RELATIVE_VELOCITY]!,
+        v2 = R[o2 + M2.MP_RELATIVE_VELOCITY]!;
+      const t1 = m > 0 && R[o1 + M2.MP_MAX_NORMAL_IMPULSE]! > 0 ? restitutionTarget(e, v1, v1, threshold, elasticThreshold) : -1,
+        t2 = m > 1 && R[o2 + M2.MP_MAX_NORMAL_IMPULSE]! > 0 ? restitutionTarget(e, v2, v2, threshold, elasticThreshold) : -1;
       if (t1 < 0 && t2 < 0) continue;
-      const a = (R[r + MR_BODY_A]! & MR_BODY_MASK) * BS2_STRIDE,
-        b = (R[r + MR_BODY_B]! & MR_BODY_MASK) * BS2_STRIDE;
-      const mA = sb[a + BS2_INV_MASS]!,
-        iA = sb[a + BS2_INV_INERTIA]!,
-        mB = sb[b + BS2_INV_MASS]!,
-        iB = sb[b + BS2_INV_INERTIA]!;
-      const nx = R[r + MR_NX]!,
-        ny = R[r + MR_NY]!;
-      let vax = sb[a + BS2_VX]!,
-        vay = sb[a + BS2_VY]!,
-        wa = sb[a + BS2_W]!,
-        vbx = sb[b + BS2_VX]!,
-        vby = sb[b + BS2_VY]!,
-        wb = sb[b + BS2_W]!;
-      const dvn = (vbx - vax) * nx + (vby - vay) * ny;
+      // The bodies' velocities are read from and written to sb point by point (pushPoint): a bouncing row
+      // is rare, and the values are those a row's locals would carry.
+      const a = (R[r + M2.MR_BODY_A]! & M2.MR_BODY_MASK) * BS.BS2_STRIDE,
+        b = (R[r + M2.MR_BODY_B]! & M2.MR_BODY_MASK) * BS.BS2_STRIDE;
+      const nx = R[r + M2.MR_NX]!,
+        ny = R[r + M2.MR_NY]!;
+      const wa = sb[a + BS.BS2_W]!,
+        wb = sb[b + BS.BS2_W]!;
+      const dvn = (sb[b + BS.BS2_VX]! - sb[a + BS.BS2_VX]!) * nx + (sb[b + BS.BS2_VY]! - sb[a + BS.BS2_VY]!) * ny;
       if (all) {
         // Each point's cap: its impulse now plus Poisson's rebound; its compression is what it delivered
         // over the substeps plus what stops its approach now (in a block, with the other: -K^-1 v_n).
         list[listed++] = i;
-        const vn1 = dvn + wb * R[o1 + MP_RNB]! - wa * R[o1 + MP_RNA]!,
-          vn2 = m > 1 ? dvn + wb * R[o2 + MP_RNB]! - wa * R[o2 + MP_RNA]! : 0;
+        const vn1 = dvn + wb * R[o1 + M2.MP_RNB]! - wa * R[o1 + M2.MP_RNA]!,
+          vn2 = m > 1 ? dvn + wb * R[o2 + M2.MP_RNB]! - wa * R[o2 + M2.MP_RNA]! : 0;
         let s1 = -R[o1 + CP_NORMAL_MASS]! * vn1,
           s2 = -R[o2 + CP_NORMAL_MASS]! * vn2;
-        if (m > 1 && R[r + MR_BLOCK_VALID] === 1) {
-          s1 = -(R[r + MR_B11]! * vn1 + R[r + MR_B12]! * vn2);
-          s2 = -(R[r + MR_B12]! * vn1 + R[r + MR_B22]! * vn2);
+        if (m > 1 && R[r + M2.MR_BLOCK_VALID] === 1) {
+          s1 = -(R[r + M2.MR_B11]! * vn1 + R[r + M2.MR_B12]! * vn2);
+          s2 = -(R[r + M2.MR_B12]! * vn1 + R[r + M2.MR_B22]! * vn2);
         }
-        caps[2 * i] = R[o1 + MP_NORMAL_IMPULSE]! + restitutionCap(e, R[o1 + MP_TOTAL_NORMAL_IMPULSE]!, s1 > 0 ? s1 : 0);
-        caps[2 * i + 1] = R[o2 + MP_NORMAL_IMPULSE]! + restitutionCap(e, R[o2 + MP_TOTAL_NORMAL_IMPULSE]!, s2 > 0 ? s2 : 0);
+        caps[2 * i] = R[o1 + M2.MP_NORMAL_IMPULSE]! + restitutionCap(e, R[o1 + M2.MP_TOTAL_NORMAL_IMPULSE]!, s1 > 0 ? s1 : 0);
+        caps[2 * i + 1] = R[o2 + M2.MP_NORMAL_IMPULSE]! + restitutionCap(e, R[o2 + M2.MP_TOTAL_NORMAL_IMPULSE]!, s2 > 0 ? s2 : 0);
       }
-      const l1 = R[o1 + MP_NORMAL_IMPULSE]!,
-        l2 = R[o2 + MP_NORMAL_IMPULSE]!;
+      const l1 = R[o1 + M2.MP_NORMAL_IMPULSE]!,
+        l2 = R[o2 + M2.MP_NORMAL_IMPULSE]!;
       let block = false;
-      if (t1 >= 0 && t2 >= 0 && R[r + MR_BLOCK_VALID] === 1) {
+      if (t1 >= 0 && t2 >= 0 && R[r + M2.MR_BLOCK_VALID] === 1) {
         // Both points at once: K x + c = w >= 0, x >= 0, x . w = 0, with w_i = v_n,i - t_i after the
         // impulses x (the linear complementarity problem of the block solve), within the caps.
-        const K12 = R[r + MR_K12]!;
-        const c1 = dvn + wb * R[o1 + MP_RNB]! - wa * R[o1 + MP_RNA]! - t1 - (R[r + MR_K11]! * l1 + K12 * l2),
-          c2 = dvn + wb * R[o2 + MP_RNB]! - wa * R[o2 + MP_RNA]! - t2 - (K12 * l1 + R[r + MR_K22]! * l2);
-        block = solveBlock(R, r, c1, c2) && R[o1 + MP_NORMAL_IMPULSE]! <= caps[2 * i]! && R[o2 + MP_NORMAL_IMPULSE]! <= caps[2 * i + 1]!;
+        const K12 = R[r + M2.MR_K12]!;
+        const c1 = dvn + wb * R[o1 + M2.MP_RNB]! - wa * R[o1 + M2.MP_RNA]! - t1 - (R[r + M2.MR_K11]! * l1 + K12 * l2),
+          c2 = dvn + wb * R[o2 + M2.MP_RNB]! - wa * R[o2 + M2.MP_RNA]! - t2 - (K12 * l1 + R[r + M2.MR_K22]! * l2);
+        block =
+          solveBlock(R, r, c1, c2) && R[o1 + M2.MP_NORMAL_IMPULSE]! <= caps[2 * i]! && R[o2 + M2.MP_NORMAL_IMPULSE]! <= caps[2 * i + 1]!;
         if (!block) {
-          R[o1 + MP_NORMAL_IMPULSE] = l1;
-          R[o2 + MP_NORMAL_IMPULSE] = l2;
+          R[o1 + M2.MP_NORMAL_IMPULSE] = l1;
+          R[o2 + M2.MP_NORMAL_IMPULSE] = l2;
         }
       }
       // Point after point (the block's impulses, or each point's own step toward its target).
       for (let p = 0; p < m; p++) {
-        const o = o1 + p * MP_STRIDE;
+        const o = o1 + p * M2.MP_STRIDE;
         const target = p === 0 ? t1 : t2;
         if (target < 0) continue;
-        const na = R[o + MP_RNA]!,
-          nb = R[o + MP_RNB]!;
+        const na = R[o + M2.MP_RNA]!,
+          nb = R[o + M2.MP_RNB]!;
         const old = p === 0 ? l1 : l2;
-        let next = R[o + MP_NORMAL_IMPULSE]!;
+        let next = R[o + M2.MP_NORMAL_IMPULSE]!;
         if (!block) {
-          const vn = (vbx - vax) * nx + (vby - vay) * ny + wb * nb - wa * na;
+          const vn =
+            (sb[b + BS.BS2_VX]! - sb[a + BS.BS2_VX]!) * nx +
+            (sb[b + BS.BS2_VY]! - sb[a + BS.BS2_VY]!) * ny +
+            sb[b + BS.BS2_W]! * nb -
+            sb[a + BS.BS2_W]! * na;
           next = restitutionImpulse(old, R[o + CP_NORMAL_MASS]!, vn, target, caps[2 * i + p]!);
-          R[o + MP_NORMAL_IMPULSE] = next;
+          R[o + M2.MP_NORMAL_IMPULSE] = next;
         }
         const dl = next - old;
-        R[o + MP_TOTAL_NORMAL_IMPULSE] = R[o + MP_TOTAL_NORMAL_IMPULSE]! + dl;
-        const Px = dl * nx,
-          Py = dl * ny;
-        vax -= mA * Px;
-        vay -= mA * Py;
-        wa -= iA * dl * na;
-        vbx += mB * Px;
-        vby += mB * Py;
-        wb += iB * dl * nb;
+        R[o + M2.MP_TOTAL_NORMAL_IMPULSE] = R[o + M2.MP_TOTAL_NORMAL_IMPULSE]! + dl;
+        pushPoint(sb, a, b, dl * nx, dl * ny, dl, na, nb);
       }
-      storeVelocities2D(sb, a, b, vax, vay, wa, vbx, vby, wb);
     }
     if (listed === 0) break;
   }
+}
+
+/**
+ * Applies a point's impulse P = (px, py) = dl n to the bodies at packed offsets a and b of sb, with the
+ * point's arms na = r_A x n and nb = r_B x n: v_A -= P / m_A, w_A -= dl na / I_A, v_B += P / m_B, w_B += dl nb / I_B.
+ */
+function pushPoint(sb: Float64Array, a: number, b: number, px: number, py: number, dl: number, na: number, nb: number): void {
+  sb[a + BS.BS2_VX] = sb[a + BS.BS2_VX]! - sb[a + BS.BS2_INV_MASS]! * px;
+  sb[a + BS.BS2_VY] = sb[a + BS.BS2_VY]! - sb[a + BS.BS2_INV_MASS]! * py;
+  sb[a + BS.BS2_W] = sb[a + BS.BS2_W]! - sb[a + BS.BS2_INV_INERTIA]! * dl * na;
+  sb[b + BS.BS2_VX] = sb[b + BS.BS2_VX]! + sb[b + BS.BS2_INV_MASS]! * px;
+  sb[b + BS.BS2_VY] = sb[b + BS.BS2_VY]! + sb[b + BS.BS2_INV_MASS]! * py;
+  sb[b + BS.BS2_W] = sb[b + BS.BS2_W]! + sb[b + BS.BS2_INV_INERTIA]! * dl * nb;
 }

@@ -2,16 +2,7 @@ import { contact3DStateOf } from '../collision/manifolds-3d.js';
 import type { PhysicsWorld } from '../world/options.js';
 import * as BS from './body-state-layout.js';
 import { bouncingList, boundedImpulse, normalBias, normalImpulse, softRow } from './contact-point.js';
-import {
-  CP_NORMAL_MASS,
-  CP_NORMAL_ROW,
-  CP_SEPARATION,
-  SN_BIAS,
-  SN_RIGID,
-  SN_RIGID_BIAS,
-  SN_SCALES,
-  SN_SOFT_ROW,
-} from './contact-point-layout.js';
+import * as CP from './contact-point-layout.js';
 import * as M3 from './manifold-layout-3d.js';
 import { restitutionImpulse, restitutionTarget } from './restitution.js';
 import { rigidPartner } from './rigid-partner.js';
@@ -76,12 +67,12 @@ export function warmStartManifolds3D(world: PhysicsWorld): void {
       sn += ln;
       if (iso) {
         const p = h + M3.REC_POINTS + M3.POINT_STRIDE * k;
-        ax += ln * R[p + CP_NORMAL_ROW + M3.ROW_AX]!;
-        ay += ln * R[p + CP_NORMAL_ROW + M3.ROW_AY]!;
-        az += ln * R[p + CP_NORMAL_ROW + M3.ROW_AZ]!;
-        bx += ln * R[p + CP_NORMAL_ROW + M3.ROW_BX]!;
-        by += ln * R[p + CP_NORMAL_ROW + M3.ROW_BY]!;
-        bz += ln * R[p + CP_NORMAL_ROW + M3.ROW_BZ]!;
+        ax += ln * R[p + CP.CP_NORMAL_ROW + M3.ROW_AX]!;
+        ay += ln * R[p + CP.CP_NORMAL_ROW + M3.ROW_AY]!;
+        az += ln * R[p + CP.CP_NORMAL_ROW + M3.ROW_AZ]!;
+        bx += ln * R[p + CP.CP_NORMAL_ROW + M3.ROW_BX]!;
+        by += ln * R[p + CP.CP_NORMAL_ROW + M3.ROW_BY]!;
+        bz += ln * R[p + CP.CP_NORMAL_ROW + M3.ROW_BZ]!;
       } else {
         const o = M3.JAC_STRIDE * q;
         ax += ln * JI[o + M3.ROW_AX]!;
@@ -189,8 +180,8 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
   const backward = st.solveParity === 1;
   // The softness table (solver/contact-point-layout.ts): a row's scales at scaleBase + SN_SOFT_ROW softRow.
   const T = st.softness,
-    sBias = T[SN_BIAS]!,
-    rBias = T[SN_RIGID_BIAS]!;
+    sBias = T[CP.SN_BIAS]!,
+    rBias = T[CP.SN_RIGID_BIAS]!;
   const LN = buf.ln,
     CARRIED = buf.carried,
     FV = st.frictionInv;
@@ -230,7 +221,7 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
     // A static, sleeping or kinematic partner (inverse mass 0): the stiffer softness (solver/rigid-partner.ts).
     const isRigid = rigidPartner(mA, mB) === 1;
     const biasRate = isRigid ? rBias : sBias,
-      scaleBase = isRigid ? SN_SCALES + SN_RIGID : SN_SCALES;
+      scaleBase = isRigid ? CP.SN_SCALES + CP.SN_RIGID : CP.SN_SCALES;
     // Displacement along n and rotation of each body so far this step.
     const dn =
       (sb[b + BS.BS3_DX]! - sb[a + BS.BS3_DX]!) * nx +
@@ -314,27 +305,27 @@ export function solveManifolds3D(world: PhysicsWorld, hs: number, useBias: boole
         const k = backward !== odd ? m - 1 - kk : kk;
         const q = 4 * i + k,
           p = h + M3.REC_POINTS + M3.POINT_STRIDE * k;
-        const ra0 = H[p + CP_NORMAL_ROW + M3.ROW_AX]!,
-          ra1 = H[p + CP_NORMAL_ROW + M3.ROW_AY]!,
-          ra2 = H[p + CP_NORMAL_ROW + M3.ROW_AZ]!,
-          rb0 = H[p + CP_NORMAL_ROW + M3.ROW_BX]!,
-          rb1 = H[p + CP_NORMAL_ROW + M3.ROW_BY]!,
-          rb2 = H[p + CP_NORMAL_ROW + M3.ROW_BZ]!;
+        const ra0 = H[p + CP.CP_NORMAL_ROW + M3.ROW_AX]!,
+          ra1 = H[p + CP.CP_NORMAL_ROW + M3.ROW_AY]!,
+          ra2 = H[p + CP.CP_NORMAL_ROW + M3.ROW_AZ]!,
+          rb0 = H[p + CP.CP_NORMAL_ROW + M3.ROW_BX]!,
+          rb1 = H[p + CP.CP_NORMAL_ROW + M3.ROW_BY]!,
+          rb2 = H[p + CP.CP_NORMAL_ROW + M3.ROW_BZ]!;
         // s = s0 + (d_B - d_A) . n + theta_B . (r_B x n) - theta_A . (r_A x n)
-        const s = H[p + CP_SEPARATION]! + dn + (hbx * rb0 + hby * rb1 + hbz * rb2 - (hax * ra0 + hay * ra1 + haz * ra2));
+        const s = H[p + CP.CP_SEPARATION]! + dn + (hbx * rb0 + hby * rb1 + hbz * rb2 - (hax * ra0 + hay * ra1 + haz * ra2));
         const vn = vnLinear + (wbx * rb0 + wby * rb1 + wbz * rb2 - (wax * ra0 + way * ra1 + waz * ra2));
         const old = LN[q]!;
         let lam: number;
         if (useBias) {
           // The row's regime, bias and scales (solver/contact-point.ts), selected without a branch.
           const soft = softRow(s, 1),
-            sel = scaleBase + SN_SOFT_ROW * soft;
+            sel = scaleBase + CP.SN_SOFT_ROW * soft;
           softMet |= soft;
-          lam = normalImpulse(old, H[p + CP_NORMAL_MASS]!, T[sel]!, T[sel + 1]!, vn, normalBias(s, invHs, biasRate, negPush, soft));
+          lam = normalImpulse(old, H[p + CP.CP_NORMAL_MASS]!, T[sel]!, T[sel + 1]!, vn, normalBias(s, invHs, biasRate, negPush, soft));
         } else {
           // A relax pass: no row is soft (its scales are 1 and 0, solver/contact-point-layout.ts), and its
           // bias is s / h_s while speculative, else 0: normalImpulse with those, its zero terms left out.
-          lam = Math.max(old - H[p + CP_NORMAL_MASS]! * (vn + +(s > 0) * (s * invHs)), 0);
+          lam = Math.max(old - H[p + CP.CP_NORMAL_MASS]! * (vn + +(s > 0) * (s * invHs)), 0);
         }
         const dl = lam - old;
         LN[q] = lam;
@@ -601,21 +592,21 @@ export function applyManifold3DRestitution(world: PhysicsWorld): void {
           (sb[b + BS.BS3_VX]! - sb[a + BS.BS3_VX]!) * nx +
           (sb[b + BS.BS3_VY]! - sb[a + BS.BS3_VY]!) * ny +
           (sb[b + BS.BS3_VZ]! - sb[a + BS.BS3_VZ]!) * nz +
-          sb[b + BS.BS3_WX]! * R[p + CP_NORMAL_ROW + M3.ROW_BX]! +
-          sb[b + BS.BS3_WY]! * R[p + CP_NORMAL_ROW + M3.ROW_BY]! +
-          sb[b + BS.BS3_WZ]! * R[p + CP_NORMAL_ROW + M3.ROW_BZ]! -
-          sb[a + BS.BS3_WX]! * R[p + CP_NORMAL_ROW + M3.ROW_AX]! -
-          sb[a + BS.BS3_WY]! * R[p + CP_NORMAL_ROW + M3.ROW_AY]! -
-          sb[a + BS.BS3_WZ]! * R[p + CP_NORMAL_ROW + M3.ROW_AZ]!;
+          sb[b + BS.BS3_WX]! * R[p + CP.CP_NORMAL_ROW + M3.ROW_BX]! +
+          sb[b + BS.BS3_WY]! * R[p + CP.CP_NORMAL_ROW + M3.ROW_BY]! +
+          sb[b + BS.BS3_WZ]! * R[p + CP.CP_NORMAL_ROW + M3.ROW_BZ]! -
+          sb[a + BS.BS3_WX]! * R[p + CP.CP_NORMAL_ROW + M3.ROW_AX]! -
+          sb[a + BS.BS3_WY]! * R[p + CP.CP_NORMAL_ROW + M3.ROW_AY]! -
+          sb[a + BS.BS3_WZ]! * R[p + CP.CP_NORMAL_ROW + M3.ROW_AZ]!;
         const old = LN[q]!;
-        const lam = restitutionImpulse(old, R[p + CP_NORMAL_MASS]!, vn, target, Number.POSITIVE_INFINITY);
+        const lam = restitutionImpulse(old, R[p + CP.CP_NORMAL_MASS]!, vn, target, Number.POSITIVE_INFINITY);
         const dl = lam - old;
         LN[q] = lam;
         if (dl === 0) continue;
         // Body row 0 (the static world) is never written.
         const o = M3.JAC_STRIDE * q;
-        if (ka > 0) pushAlongNormal(sb, a, -dl, nx, ny, nz, iso, iA, iso ? R : JI, iso ? p + CP_NORMAL_ROW + M3.ROW_AX : o + M3.ROW_AX);
-        if (kb > 0) pushAlongNormal(sb, b, dl, nx, ny, nz, iso, iB, iso ? R : JI, iso ? p + CP_NORMAL_ROW + M3.ROW_BX : o + M3.ROW_BX);
+        if (ka > 0) pushAlongNormal(sb, a, -dl, nx, ny, nz, iso, iA, iso ? R : JI, iso ? p + CP.CP_NORMAL_ROW + M3.ROW_AX : o + M3.ROW_AX);
+        if (kb > 0) pushAlongNormal(sb, b, dl, nx, ny, nz, iso, iB, iso ? R : JI, iso ? p + CP.CP_NORMAL_ROW + M3.ROW_BX : o + M3.ROW_BX);
       }
       if (all && bounces) list[listed++] = i;
     }

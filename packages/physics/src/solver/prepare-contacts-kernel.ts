@@ -8,21 +8,7 @@
  */
 
 import type { KernelArray, KernelHelper } from '../threads/kernel-types.js';
-import {
-  BS2_INV_INERTIA,
-  BS2_INV_MASS,
-  BS2_STRIDE,
-  BS2_VX,
-  BS2_VY,
-  BS2_W,
-  BS3_INV_INERTIA,
-  BS3_INV_MASS,
-  BS3_STRIDE,
-  BS3_VZ,
-  BS3_WX,
-  BS3_WY,
-  BS3_WZ,
-} from './body-state-layout.js';
+import * as BS from './body-state-layout.js';
 import type { rigidPartner } from './rigid-partner.js';
 import * as PREPARE from './slots/prepare-contacts.js';
 
@@ -95,9 +81,9 @@ export function prepareRowMasses(A: KernelArray[], P: Float64Array, lo: number, 
     BOUNDARY = P[PREPARE.BOUNDARY]!;
   // The solver state's layout: vx and vy sit at the same offsets in both.
   const is3D = P[PREPARE.THREE_D] === 1,
-    S = is3D ? BS3_STRIDE : BS2_STRIDE,
-    IM = is3D ? BS3_INV_MASS : BS2_INV_MASS,
-    II = is3D ? BS3_INV_INERTIA : BS2_INV_INERTIA;
+    S = is3D ? BS.BS3_STRIDE : BS.BS2_STRIDE,
+    IM = is3D ? BS.BS3_INV_MASS : BS.BS2_INV_MASS,
+    II = is3D ? BS.BS3_INV_INERTIA : BS.BS2_INV_INERTIA;
   for (let i = lo; i < hi; i++) {
     const a = CA[i]!,
       b = CB[i]!,
@@ -118,8 +104,8 @@ export function prepareRowMasses(A: KernelArray[], P: Float64Array, lo: number, 
     const kt = k + iiA * ra * ra + iiB * rb * rb;
     TM[i] = kt > 0 ? 1 / kt : 0;
     RP[i] = rigidOf(imA, imB);
-    const dvx = sb[ob + BS2_VX]! - sb[oa + BS2_VX]!,
-      dvy = sb[ob + BS2_VY]! - sb[oa + BS2_VY]!;
+    const dvx = sb[ob + BS.BS2_VX]! - sb[oa + BS.BS2_VX]!,
+      dvy = sb[ob + BS.BS2_VY]! - sb[oa + BS.BS2_VY]!;
     // The tangential speed at the contact point at the start of the step (gravity rewound): stick or
     // slip; and the predicted approach, for the impact stage's ordering (measureApproach recomputes it).
     let vt: number, rv: number;
@@ -140,11 +126,11 @@ export function prepareRowMasses(A: KernelArray[], P: Float64Array, lo: number, 
       T1X[i] = t1x;
       T1Y[i] = t1y;
       T1Z[i] = t1z;
-      const dvz = sb[ob + BS3_VZ]! - sb[oa + BS3_VZ]!;
+      const dvz = sb[ob + BS.BS3_VZ]! - sb[oa + BS.BS3_VZ]!;
       // Contact-point velocity: v + w x r with r_A = ra n, r_B = -rb n.
-      const sx = -rb * sb[ob + BS3_WX]! - ra * sb[oa + BS3_WX]!,
-        sy = -rb * sb[ob + BS3_WY]! - ra * sb[oa + BS3_WY]!,
-        sz = -rb * sb[ob + BS3_WZ]! - ra * sb[oa + BS3_WZ]!;
+      const sx = -rb * sb[ob + BS.BS3_WX]! - ra * sb[oa + BS.BS3_WX]!,
+        sy = -rb * sb[ob + BS.BS3_WY]! - ra * sb[oa + BS.BS3_WY]!,
+        sz = -rb * sb[ob + BS.BS3_WZ]! - ra * sb[oa + BS.BS3_WZ]!;
       const cx = dvx + sy * nz - sz * ny,
         cy = dvy + sz * nx - sx * nz,
         cz = dvz + sx * ny - sy * nx;
@@ -159,7 +145,7 @@ export function prepareRowMasses(A: KernelArray[], P: Float64Array, lo: number, 
       T1X[i] = -ny;
       T1Y[i] = nx;
       T1Z[i] = 0;
-      vt = Math.abs(dvx * -ny + dvy * nx - sb[ob + BS2_W]! * rb - sb[oa + BS2_W]! * ra);
+      vt = Math.abs(dvx * -ny + dvy * nx - sb[ob + BS.BS2_W]! * rb - sb[oa + BS.BS2_W]! * ra);
       rv = dvx * nx + dvy * ny + 0;
     }
     let e: number, mu: number, mus: number;

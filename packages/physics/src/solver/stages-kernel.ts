@@ -15,37 +15,7 @@
 import type { rotateFrom } from '../math/quaternion.js';
 import type { awaitBlocks, claimBlock } from '../threads/block-claim.js';
 import type { KernelArray, KernelHelper } from '../threads/kernel-types.js';
-import {
-  BS2_DX,
-  BS2_DY,
-  BS2_INV_INERTIA,
-  BS2_INV_MASS,
-  BS2_PUSHED,
-  BS2_STRIDE,
-  BS2_VX,
-  BS2_VY,
-  BS2_W,
-  BS3_DX,
-  BS3_DY,
-  BS3_DZ,
-  BS3_INV_INERTIA,
-  BS3_INV_MASS,
-  BS3_PUSHED,
-  BS3_STRIDE,
-  BS3_VX,
-  BS3_VY,
-  BS3_VZ,
-  BS3_WX,
-  BS3_WY,
-  BS3_WZ,
-  BX_BASE_X,
-  BX_BASE_Y,
-  BX_BASE_Z,
-  BX_ROT_X,
-  BX_ROT_Y,
-  BX_ROT_Z,
-  BX_STRIDE,
-} from './body-state-layout.js';
+import * as BS from './body-state-layout.js';
 import type { restitutionCap, restitutionTarget } from './restitution.js';
 import * as APPROACH from './slots/approach.js';
 import * as PLAN from './slots/colored-plan.js';
@@ -89,13 +59,13 @@ export function gatherFill(A: KernelArray[], P: Float64Array, ids: Int32Array | 
     DYNAMIC = P[GATHER.DYNAMIC]!,
     KINEMATIC = P[GATHER.KINEMATIC]!;
   const is3D = P[GATHER.THREE_D] === 1,
-    S = is3D ? BS3_STRIDE : BS2_STRIDE;
+    S = is3D ? BS.BS3_STRIDE : BS.BS2_STRIDE;
   const list = ids as Int32Array;
   for (let i = lo; i < hi; i++) {
     const k = i + 1,
       e = list[i]!;
     const o = k * S,
-      q = k * BX_STRIDE;
+      q = k * BS.BX_STRIDE;
     const ii = invInertia[e]!;
     const dynamic = type[e] === DYNAMIC;
     // A kinematic body's spin is part of its surface velocity (v + w x r) that its contacts see; it is
@@ -108,37 +78,37 @@ export function gatherFill(A: KernelArray[], P: Float64Array, ids: Int32Array | 
     const forced = fx[e] !== 0 || fy[e] !== 0 || fz[e] !== 0;
     const gb = dynamic && !forced ? 0.5 * h : 0;
     const held = forced ? 1 : pushed;
-    ex[q + BX_BASE_X] = px[e]! - vx[e]! * h + gx * gb;
-    ex[q + BX_BASE_Y] = py[e]! - vy[e]! * h + gy * gb;
+    ex[q + BS.BX_BASE_X] = px[e]! - vx[e]! * h + gx * gb;
+    ex[q + BS.BX_BASE_Y] = py[e]! - vy[e]! * h + gy * gb;
     // The integrator turned the body by w h; the substeps will turn it by sum w_k h_s instead.
-    ex[q + BX_ROT_Z] = ii > 0 ? -wz[e]! * h : 0;
+    ex[q + BS.BX_ROT_Z] = ii > 0 ? -wz[e]! * h : 0;
     // vx and vy sit at the same offsets in both layouts.
-    sb[o + BS2_VX] = dynamic ? vx[e]! - gx : vx[e]!;
-    sb[o + BS2_VY] = dynamic ? vy[e]! - gy : vy[e]!;
+    sb[o + BS.BS2_VX] = dynamic ? vx[e]! - gx : vx[e]!;
+    sb[o + BS.BS2_VY] = dynamic ? vy[e]! - gy : vy[e]!;
     if (is3D) {
-      ex[q + BX_BASE_Z] = pz[e]! - vz[e]! * h + gz * gb;
-      ex[q + BX_ROT_X] = ii > 0 ? -wx[e]! * h : 0;
-      ex[q + BX_ROT_Y] = ii > 0 ? -wy[e]! * h : 0;
-      sb[o + BS3_VZ] = dynamic ? vz[e]! - gz : vz[e]!;
-      sb[o + BS3_WX] = ii > 0 || spins ? wx[e]! : 0;
-      sb[o + BS3_WY] = ii > 0 || spins ? wy[e]! : 0;
-      sb[o + BS3_WZ] = ii > 0 || spins ? wz[e]! : 0;
-      sb[o + BS3_DX] = 0;
-      sb[o + BS3_DY] = 0;
-      sb[o + BS3_DZ] = 0;
-      sb[o + BS3_INV_MASS] = invMass[e]!;
-      sb[o + BS3_INV_INERTIA] = ii;
-      sb[o + BS3_PUSHED] = held;
+      ex[q + BS.BX_BASE_Z] = pz[e]! - vz[e]! * h + gz * gb;
+      ex[q + BS.BX_ROT_X] = ii > 0 ? -wx[e]! * h : 0;
+      ex[q + BS.BX_ROT_Y] = ii > 0 ? -wy[e]! * h : 0;
+      sb[o + BS.BS3_VZ] = dynamic ? vz[e]! - gz : vz[e]!;
+      sb[o + BS.BS3_WX] = ii > 0 || spins ? wx[e]! : 0;
+      sb[o + BS.BS3_WY] = ii > 0 || spins ? wy[e]! : 0;
+      sb[o + BS.BS3_WZ] = ii > 0 || spins ? wz[e]! : 0;
+      sb[o + BS.BS3_DX] = 0;
+      sb[o + BS.BS3_DY] = 0;
+      sb[o + BS.BS3_DZ] = 0;
+      sb[o + BS.BS3_INV_MASS] = invMass[e]!;
+      sb[o + BS.BS3_INV_INERTIA] = ii;
+      sb[o + BS.BS3_PUSHED] = held;
     } else {
-      ex[q + BX_BASE_Z] = 0;
-      ex[q + BX_ROT_X] = 0;
-      ex[q + BX_ROT_Y] = 0;
-      sb[o + BS2_W] = ii > 0 || spins ? wz[e]! : 0;
-      sb[o + BS2_DX] = 0;
-      sb[o + BS2_DY] = 0;
-      sb[o + BS2_INV_MASS] = invMass[e]!;
-      sb[o + BS2_INV_INERTIA] = ii;
-      sb[o + BS2_PUSHED] = held;
+      ex[q + BS.BX_BASE_Z] = 0;
+      ex[q + BS.BX_ROT_X] = 0;
+      ex[q + BS.BX_ROT_Y] = 0;
+      sb[o + BS.BS2_W] = ii > 0 || spins ? wz[e]! : 0;
+      sb[o + BS.BS2_DX] = 0;
+      sb[o + BS.BS2_DY] = 0;
+      sb[o + BS.BS2_INV_MASS] = invMass[e]!;
+      sb[o + BS.BS2_INV_INERTIA] = ii;
+      sb[o + BS.BS2_PUSHED] = held;
     }
   }
   return 0;
@@ -174,15 +144,15 @@ export function approachSpeeds(A: KernelArray[], P: Float64Array, _ids: Int32Arr
     DYNAMIC = P[APPROACH.DYNAMIC]!;
   // vx and vy sit at the same offsets in both layouts.
   const is3D = P[APPROACH.THREE_D] === 1,
-    S = is3D ? BS3_STRIDE : BS2_STRIDE;
+    S = is3D ? BS.BS3_STRIDE : BS.BS2_STRIDE;
   for (let i = lo; i < hi; i++) {
     const oa = IA[i]! * S,
       ob = IB[i]! * S;
     const nx = NX[i]!,
       ny = NY[i]!,
       nz = NZ[i]!;
-    let rv = (sb[ob + BS2_VX]! - sb[oa + BS2_VX]!) * nx + (sb[ob + BS2_VY]! - sb[oa + BS2_VY]!) * ny;
-    if (is3D) rv += (sb[ob + BS3_VZ]! - sb[oa + BS3_VZ]!) * nz;
+    let rv = (sb[ob + BS.BS2_VX]! - sb[oa + BS.BS2_VX]!) * nx + (sb[ob + BS.BS2_VY]! - sb[oa + BS.BS2_VY]!) * ny;
+    if (is3D) rv += (sb[ob + BS.BS3_VZ]! - sb[oa + BS.BS3_VZ]!) * nz;
     RV[i] = rv;
     if (IMP[i]! > 0 && rv >= 0) continue;
     const gap = S0[i]!;
@@ -270,39 +240,39 @@ export function finishBodyRows(
   const rotate = H[15] as typeof rotateFrom;
   // The solver state's layout: vx and vy sit at the same offsets in both, dy follows dx.
   const is3D = P[FINISH.THREE_D] === 1,
-    S = is3D ? BS3_STRIDE : BS2_STRIDE,
-    DX = is3D ? BS3_DX : BS2_DX,
-    PUSHED = is3D ? BS3_PUSHED : BS2_PUSHED;
+    S = is3D ? BS.BS3_STRIDE : BS.BS2_STRIDE,
+    DX = is3D ? BS.BS3_DX : BS.BS2_DX,
+    PUSHED = is3D ? BS.BS3_PUSHED : BS.BS2_PUSHED;
   let check = 0;
   for (let i = lo; i < hi; i++) {
     const k = i + 1,
       e = list[i]!;
     if (type[e] !== DYNAMIC) continue;
     const o = k * S,
-      r = k * BX_STRIDE;
+      r = k * BS.BX_STRIDE;
     const free = sb[o + PUSHED] === 0 ? 1 : 0;
-    vx[e] = sb[o + BS2_VX]!;
-    vy[e] = sb[o + BS2_VY]!;
-    const x = ex[r + BX_BASE_X]! + sb[o + DX]! + imp[k * Q]! + free * fx,
-      y = ex[r + BX_BASE_Y]! + sb[o + DX + 1]! + imp[k * Q + 1]! + free * fy;
+    vx[e] = sb[o + BS.BS2_VX]!;
+    vy[e] = sb[o + BS.BS2_VY]!;
+    const x = ex[r + BS.BX_BASE_X]! + sb[o + DX]! + imp[k * Q]! + free * fx,
+      y = ex[r + BS.BX_BASE_Y]! + sb[o + DX + 1]! + imp[k * Q + 1]! + free * fy;
     px[e] = x;
     py[e] = y;
     if (is3D) {
-      vz[e] = sb[o + BS3_VZ]!;
-      const z = ex[r + BX_BASE_Z]! + sb[o + BS3_DZ]! + imp[k * Q + 2]! + free * fz;
+      vz[e] = sb[o + BS.BS3_VZ]!;
+      const z = ex[r + BS.BX_BASE_Z]! + sb[o + BS.BS3_DZ]! + imp[k * Q + 2]! + free * fz;
       pz[e] = z;
-      check += x + y + z + sb[o + BS3_VX]! + sb[o + BS3_VY]! + sb[o + BS3_VZ]!;
-      if (sb[o + BS3_INV_INERTIA]! > 0) {
-        wx[e] = sb[o + BS3_WX]!;
-        wy[e] = sb[o + BS3_WY]!;
-        wz[e] = sb[o + BS3_WZ]!;
-        rotate(qx, qy, qz, qw, e, qx[e]!, qy[e]!, qz[e]!, qw[e]!, ex[r + BX_ROT_X]!, ex[r + BX_ROT_Y]!, ex[r + BX_ROT_Z]!);
+      check += x + y + z + sb[o + BS.BS3_VX]! + sb[o + BS.BS3_VY]! + sb[o + BS.BS3_VZ]!;
+      if (sb[o + BS.BS3_INV_INERTIA]! > 0) {
+        wx[e] = sb[o + BS.BS3_WX]!;
+        wy[e] = sb[o + BS.BS3_WY]!;
+        wz[e] = sb[o + BS.BS3_WZ]!;
+        rotate(qx, qy, qz, qw, e, qx[e]!, qy[e]!, qz[e]!, qw[e]!, ex[r + BS.BX_ROT_X]!, ex[r + BS.BX_ROT_Y]!, ex[r + BS.BX_ROT_Z]!);
       }
     } else {
-      check += x + y + sb[o + BS2_VX]! + sb[o + BS2_VY]!;
-      if (sb[o + BS2_INV_INERTIA]! > 0) {
-        wz[e] = sb[o + BS2_W]!;
-        angle[e] = angle[e]! + ex[r + BX_ROT_Z]!;
+      check += x + y + sb[o + BS.BS2_VX]! + sb[o + BS.BS2_VY]!;
+      if (sb[o + BS.BS2_INV_INERTIA]! > 0) {
+        wz[e] = sb[o + BS.BS2_W]!;
+        angle[e] = angle[e]! + ex[r + BS.BX_ROT_Z]!;
       }
     }
   }
@@ -380,8 +350,8 @@ export function deepestRow(A: KernelArray[], P: Float64Array, lo: number, hi: nu
   const m = P[FINISH.ROWS]!,
     nb = P[FINISH.BODIES]!;
   const is3D = P[FINISH.THREE_D] === 1,
-    S = is3D ? BS3_STRIDE : BS2_STRIDE,
-    DX = is3D ? BS3_DX : BS2_DX;
+    S = is3D ? BS.BS3_STRIDE : BS.BS2_STRIDE,
+    DX = is3D ? BS.BS3_DX : BS.BS2_DX;
   const r0 = Math.floor((m * lo) / nb),
     r1 = Math.floor((m * hi) / nb);
   let deepest = 0;
@@ -390,7 +360,7 @@ export function deepestRow(A: KernelArray[], P: Float64Array, lo: number, hi: nu
       b = IB[i]! * S;
     // The start separations already hold the impact corrections (solver/impacts.ts).
     let s = S0[i]! + (sb[b + DX]! - sb[a + DX]!) * NX[i]! + (sb[b + DX + 1]! - sb[a + DX + 1]!) * NY[i]!;
-    if (is3D) s += (sb[b + BS3_DZ]! - sb[a + BS3_DZ]!) * NZ[i]!;
+    if (is3D) s += (sb[b + BS.BS3_DZ]! - sb[a + BS.BS3_DZ]!) * NZ[i]!;
     if (s < deepest) deepest = s;
   }
   return deepest;
@@ -435,54 +405,91 @@ export function restitutionColored(
   // bodies, it solved in the substeps.
   const claim = A[RESTITUTION.CLAIM] as Int32Array,
     threads = plan[PLAN.THREADS]! > 0 ? plan[PLAN.THREADS]! : 1;
-  const claimNext = H[9] as typeof claimBlock,
-    awaitUnit = H[16] as typeof awaitBlocks,
-    cursor = new Int32Array(2);
+  const unit: UnitBlocks = { claim, bar, part, threads, wait, spinMs, cursor: new Int32Array(2), H };
+  // The block loops are kernel helpers (KERNEL_HELPERS 7 and 8, solver/kernel-helpers.ts): this kernel
+  // runs once a step, and inline they were compiled on the stack partway through a call.
+  let c = -1,
+    first = 0;
+  const block = (blk: number): void => {
+    if (c < 0) {
+      const lo = blk * FIRST,
+        hi = Math.min(n, lo + FIRST);
+      const bouncing = (H[7] as typeof restitutionTargets)(A, P, lo, hi, H);
+      if (bouncing > 0) Atomics.add(bar, 3, bouncing);
+    } else (H[8] as typeof restitutionRows)(A, P, bounds[first + blk]!, bounds[first + blk + 1]!);
+  };
   for (let u = 0; u < units; u++) {
-    const c = u === 0 ? -1 : (u - 1) % (C + 1);
-    const first = c < 0 ? 0 : plan[PLAN.COLOR_BLOCKS + c]!;
+    c = u === 0 ? -1 : (u - 1) % (C + 1);
+    first = c < 0 ? 0 : plan[PLAN.COLOR_BLOCKS + c]!;
     const count = c < 0 ? Math.ceil(n / FIRST) : plan[PLAN.COLOR_BLOCKS + c + 1]! - first;
-    const end = base + count;
     // From unit 1 on: nothing to do unless some row bounces (known once unit 0 is done).
     if (u === 1) {
-      if (!awaitUnit(bar, base, wait, spinMs)) {
+      if (!(H[16] as typeof awaitBlocks)(bar, base, wait, spinMs)) {
         failed = true;
         break;
       }
       if (Atomics.load(bar, 3) === 0) break;
     }
-    if (count > 0) {
-      if (!awaitUnit(bar, base, wait, spinMs)) {
-        failed = true;
-        break;
-      }
-      cursor[0] = 0;
-      cursor[1] = 0;
-      for (
-        let blk = claimNext(claim, base, count, part, threads, cursor);
-        blk >= 0;
-        blk = claimNext(claim, base, count, part, threads, cursor)
-      ) {
-        try {
-          // The block loops are kernel helpers (KERNEL_HELPERS 7 and 8, solver/kernel-helpers.ts): this kernel
-          // runs once a step, and inline they were compiled on the stack partway through a call.
-          if (c < 0) {
-            const lo = blk * FIRST,
-              hi = Math.min(n, lo + FIRST);
-            const bouncing = (H[7] as typeof restitutionTargets)(A, P, lo, hi, H);
-            if (bouncing > 0) Atomics.add(bar, 3, bouncing);
-          } else (H[8] as typeof restitutionRows)(A, P, bounds[first + blk]!, bounds[first + blk + 1]!);
-        } catch (e) {
-          Atomics.store(bar, 2, 1);
-          Atomics.notify(bar, 1);
-          throw e;
-        }
-        if (Atomics.add(bar, 1, 1) + 1 === end) Atomics.notify(bar, 1);
-      }
+    if (count > 0 && !(H[20] as typeof runUnitBlocks)(unit, base, count, block)) {
+      failed = true;
+      break;
     }
-    base = end;
+    base += count;
   }
   return failed ? -1 : 0;
+}
+
+/**
+ * What runUnitBlocks needs of a block-claimed kernel's call (solveColored2D, restitutionColored), made once
+ * a call: the claim flags and counters (`bar`: [1] blocks done, [2] a thread failed), this thread's
+ * `part` of `threads`, whether it may block and how long it spins first, its claim cursor, the kernel helpers.
+ */
+export interface UnitBlocks {
+  claim: Int32Array;
+  bar: Int32Array;
+  part: number;
+  threads: number;
+  wait: boolean;
+  spinMs: number;
+  cursor: Int32Array;
+  H: readonly KernelHelper[];
+}
+
+/**
+ * This thread's share of one unit of a block-claimed kernel (KERNEL_HELPERS 20): waits until every block of
+ * the earlier units is done (`base` blocks, threads/block-claim.ts awaitBlocks, KERNEL_HELPERS 16), then
+ * claims the unit's `count` blocks one by one (claimBlock, KERNEL_HELPERS 9) and runs `block` on each,
+ * counting it done in bar[1]; the unit's last block wakes the threads waiting to start the next. If
+ * `block` throws, lets the other threads out of their waits (bar[2] = 1) and throws again. Returns false
+ * if another thread failed (the caller stops).
+ * @category Threads
+ */
+export function runUnitBlocks(run: UnitBlocks, base: number, count: number, block: (blk: number) => void): boolean {
+  const claim = run.claim,
+    bar = run.bar,
+    part = run.part,
+    threads = run.threads,
+    cursor = run.cursor;
+  const claimNext = run.H[9] as typeof claimBlock;
+  if (!(run.H[16] as typeof awaitBlocks)(bar, base, run.wait, run.spinMs)) return false;
+  const end = base + count;
+  cursor[0] = 0;
+  cursor[1] = 0;
+  for (
+    let blk = claimNext(claim, base, count, part, threads, cursor);
+    blk >= 0;
+    blk = claimNext(claim, base, count, part, threads, cursor)
+  ) {
+    try {
+      block(blk);
+    } catch (e) {
+      Atomics.store(bar, 2, 1);
+      Atomics.notify(bar, 1);
+      throw e;
+    }
+    if (Atomics.add(bar, 1, 1) + 1 === end) Atomics.notify(bar, 1);
+  }
+  return true;
 }
 
 /**
@@ -520,7 +527,7 @@ export function restitutionTargets(A: KernelArray[], P: Float64Array, lo: number
     capOf = H[18] as typeof restitutionCap;
   // vx and vy sit at the same offsets in both layouts.
   const is3D = P[RESTITUTION.THREE_D] === 1,
-    S = is3D ? BS3_STRIDE : BS2_STRIDE;
+    S = is3D ? BS.BS3_STRIDE : BS.BS2_STRIDE;
   let bouncing = 0;
   for (let i = lo; i < hi; i++) {
     if (MAXN[i] === 0) {
@@ -537,8 +544,8 @@ export function restitutionTargets(A: KernelArray[], P: Float64Array, lo: number
     RV[i] = target;
     const a = IA[i]! * S,
       bb = IB[i]! * S;
-    let vn = (sb[bb + BS2_VX]! - sb[a + BS2_VX]!) * NX[i]! + (sb[bb + BS2_VY]! - sb[a + BS2_VY]!) * NY[i]!;
-    if (is3D) vn += (sb[bb + BS3_VZ]! - sb[a + BS3_VZ]!) * NZ[i]!;
+    let vn = (sb[bb + BS.BS2_VX]! - sb[a + BS.BS2_VX]!) * NX[i]! + (sb[bb + BS.BS2_VY]! - sb[a + BS.BS2_VY]!) * NY[i]!;
+    if (is3D) vn += (sb[bb + BS.BS3_VZ]! - sb[a + BS.BS3_VZ]!) * NZ[i]!;
     TOT[i] = capOf(e, TOT[i]!, vn < 0 ? -NM[i]! * vn : 0);
     bouncing++;
   }
@@ -566,8 +573,8 @@ export function restitutionRows(A: KernelArray[], P: Float64Array, r0: number, r
     IMP = A[RESTITUTION.IMPULSE] as Float64Array,
     row = A[RESTITUTION.ROW] as Int32Array;
   const is3D = P[RESTITUTION.THREE_D] === 1,
-    S = is3D ? BS3_STRIDE : BS2_STRIDE,
-    im = is3D ? BS3_INV_MASS : BS2_INV_MASS;
+    S = is3D ? BS.BS3_STRIDE : BS.BS2_STRIDE,
+    im = is3D ? BS.BS3_INV_MASS : BS.BS2_INV_MASS;
   for (let k = r0; k < r1; k++) {
     const i = row[k]!;
     const target = RV[i]!;
@@ -576,8 +583,8 @@ export function restitutionRows(A: KernelArray[], P: Float64Array, r0: number, r
       bb = IB[i]! * S;
     const nx = NX[i]!,
       ny = NY[i]!;
-    let vn = (sb[bb + BS2_VX]! - sb[a + BS2_VX]!) * nx + (sb[bb + BS2_VY]! - sb[a + BS2_VY]!) * ny;
-    if (is3D) vn += (sb[bb + BS3_VZ]! - sb[a + BS3_VZ]!) * NZ[i]!;
+    let vn = (sb[bb + BS.BS2_VX]! - sb[a + BS.BS2_VX]!) * nx + (sb[bb + BS.BS2_VY]! - sb[a + BS.BS2_VY]!) * ny;
+    if (is3D) vn += (sb[bb + BS.BS3_VZ]! - sb[a + BS.BS3_VZ]!) * NZ[i]!;
     const old = MAXN[i]!;
     // solver/restitution.ts restitutionImpulse, written out: a helper call per row and pass is not inlined here.
     let acc = old - NM[i]! * (vn - target);
@@ -589,14 +596,14 @@ export function restitutionRows(A: KernelArray[], P: Float64Array, r0: number, r
     IMP[i] = IMP[i]! + dl;
     const ka = sb[a + im]! * dl,
       kb = sb[bb + im]! * dl;
-    sb[a + BS2_VX] = sb[a + BS2_VX]! - ka * nx;
-    sb[a + BS2_VY] = sb[a + BS2_VY]! - ka * ny;
-    sb[bb + BS2_VX] = sb[bb + BS2_VX]! + kb * nx;
-    sb[bb + BS2_VY] = sb[bb + BS2_VY]! + kb * ny;
+    sb[a + BS.BS2_VX] = sb[a + BS.BS2_VX]! - ka * nx;
+    sb[a + BS.BS2_VY] = sb[a + BS.BS2_VY]! - ka * ny;
+    sb[bb + BS.BS2_VX] = sb[bb + BS.BS2_VX]! + kb * nx;
+    sb[bb + BS.BS2_VY] = sb[bb + BS.BS2_VY]! + kb * ny;
     if (is3D) {
       const nz = NZ[i]!;
-      sb[a + BS3_VZ] = sb[a + BS3_VZ]! - ka * nz;
-      sb[bb + BS3_VZ] = sb[bb + BS3_VZ]! + kb * nz;
+      sb[a + BS.BS3_VZ] = sb[a + BS.BS3_VZ]! - ka * nz;
+      sb[bb + BS.BS3_VZ] = sb[bb + BS.BS3_VZ]! + kb * nz;
     }
   }
 }
