@@ -50,6 +50,7 @@ import {
   beaconName,
   catchesBeacon,
   chooseBeacon,
+  courseSpeed,
   lastBeacon,
   layCourse,
   letGoHint,
@@ -469,12 +470,14 @@ let heaveKeySince = Number.NaN;
 
 /**
  * The way the boat is going along x for the beacons' skip rules (./beacons.ts passedBeacon,
- * chooseBeacon), m/s: its speed, but none ahead while Astern is held or the screw runs astern, so a player who turns
- * back on the "skipped in N m" warning keeps the beacon while the Astern brake still slows the boat.
+ * chooseBeacon, courseSpeed), m/s: its speed, but none ahead while Astern is held or the screw runs
+ * astern, so a player who turns back on the "skipped in N m" warning keeps the beacon while the
+ * Astern brake still slows the boat; and none astern otherwise, so a current carrying the boat back
+ * does not turn the target round to a beacon skipped behind it.
  */
 function goingX(): number {
   const vx = shell.world.components.Velocity.x[handles.hull]!;
-  return asternHeld || state.throttle < 0 ? Math.min(vx, 0) : vx;
+  return courseSpeed(vx, asternHeld || state.throttle < 0);
 }
 /** Whether the last step had Astern held (and not Ahead): the boat is being turned back (goingX). */
 let asternHeld = false;
