@@ -2074,7 +2074,13 @@ function drawEdgeMarks(W: number, H: number, k: number, cx: number, sy: (y: numb
     top = 14 + size,
     bottom = H - 14 - size;
   // Taken: the gauge's tags, the target's frame, the pointer's label and badge, then each mark placed.
-  const taken = [gauge_.depth, gauge_.target, aim.frame, ...(pointer.visible ? [aim.label, aim.badge] : [])].filter((b) => b[2]! > 0);
+  const taken = [
+    gauge_.depth,
+    gauge_.target,
+    aim.frame,
+    ...(pointer.visible ? [aim.label, aim.badge] : []),
+    ...(mineTag.visible ? [mineWarning.box] : []),
+  ].filter((b) => b[2]! > 0);
   for (const [n, m] of marks.entries()) {
     const text =
       edgeTexts[n] ??
@@ -2092,16 +2098,19 @@ function drawEdgeMarks(W: number, H: number, k: number, cx: number, sy: (y: numb
       icon = tip - heading * 22,
       w = text.width + 38,
       h = Math.max(24, text.height + 8);
-    let y = Math.max(top, Math.min(bottom, sy(m.y)));
+    const want = Math.max(top, Math.min(bottom, sy(m.y)));
     const boxAt = (yy: number) => [heading > 0 ? tip - w - 6 : tip, yy - h / 2, w + 6, h];
-    for (let tries = 0; tries < 6; tries++) {
-      const hit = taken.find((b) => overlaps(boxAt(y), b, 2));
-      if (!hit) break;
-      // Off it, downward if the mark's depth lies below the middle of what it met, else upward.
-      const down = y >= hit[1]! + hit[3]! / 2;
-      y = down ? hit[1]! + hit[3]! + h / 2 + 3 : hit[1]! - h / 2 - 3;
-      y = Math.max(top, Math.min(bottom, y));
+    // At its depth, or else just above or below one of the boxes taken, whichever clear place is
+    // nearest its depth; none clear (on a phone the pointer's label and the gauge's tags can fill the
+    // edge), it is not drawn: a chip over the target's words hid them (issue 34).
+    const places = [want, ...taken.flatMap((b) => [b[1]! - h / 2 - 3, b[1]! + b[3]! + h / 2 + 3])]
+      .filter((yy) => yy >= top && yy <= bottom && !taken.some((b) => overlaps(boxAt(yy), b, 2)))
+      .sort((a, b) => Math.abs(a - want) - Math.abs(b - want));
+    if (places.length === 0) {
+      text.visible = false;
+      continue;
     }
+    const y = places[0]!;
     const box = boxAt(y);
     taken.push(box);
     const red = m.kind === 'mine';
