@@ -270,10 +270,13 @@ export function coastBrake(mass: number, u: number, throttle: number, astern = f
  * m/s: a diving boat drags more) plus m (v_asked - u) / `HELM.speedTime`, pushed along a hull
  * pitched by `angle` rad (so divided by cos(angle)), never pulling the other way. The speed asked is
  * the one ahead, not along the pitched hull: a boat diving with its bow down still makes the speed
- * ahead its throttle asks for. Zero with the throttle at zero.
+ * ahead its throttle asks for. Zero with the throttle at zero. `against`: the speed of a current
+ * flowing against the push, m/s (>= 0; default 0): the speed asked is made good over the ground, so
+ * it is asked through the water that much faster (a small push astern against a 1.2 m/s current
+ * made no headway at all).
  * @throws RangeError when `mass` is not a finite positive number, or `u`, `throttle`, `vy` or `angle` is not finite.
  */
-export function screwPush(mass: number, u: number, throttle: number, vy = 0, angle = 0): number {
+export function screwPush(mass: number, u: number, throttle: number, vy = 0, angle = 0, against = 0): number {
   if (!(Number.isFinite(mass) && mass > 0)) throw new RangeError(`screwPush: mass must be a finite number > 0 kg, got ${mass}`);
   if (!Number.isFinite(u)) throw new RangeError(`screwPush: u must be finite m/s, got ${u}`);
   if (!Number.isFinite(throttle)) throw new RangeError(`screwPush: throttle must be finite, got ${throttle}`);
@@ -282,7 +285,7 @@ export function screwPush(mass: number, u: number, throttle: number, vy = 0, ang
   const t = clamp(throttle, -HELM.asternShare, 1);
   if (t === 0) return 0;
   const sign = Math.sign(t),
-    asked = Math.abs(t) * HELM.topSpeed;
+    asked = Math.abs(t) * HELM.topSpeed + Math.max(0, Number.isFinite(against) ? against : 0);
   const ahead = SUBMARINE.dragCoefficient * asked * Math.hypot(asked, vy) + (mass * (asked - sign * u)) / HELM.speedTime;
   // Along the hull: a pitched hull's push has cos(angle) of it ahead (at most 60 degrees counted).
   return sign * clamp(ahead / Math.max(0.5, Math.cos(angle)), 0, Math.abs(t) * SUBMARINE.maxThrust);
@@ -517,7 +520,8 @@ export function steer(world: PhysicsWorld, handles: SubmarineHandles, input: Hel
   const ux = c.Velocity.x[e]! - current;
   const along = keep || (input.ahead && !input.astern && ux >= 0) || (input.astern && !input.ahead && ux <= 0);
   const brakeForce = along ? 0 : coastBrake(mass, ux, state.throttle, input.astern && !input.ahead);
-  const push = screwPush(mass, ux, state.throttle, vy, angle);
+  // Against the current the speed asked is made good over the ground (the screw pushes harder).
+  const push = screwPush(mass, ux, state.throttle, vy, angle, Math.max(0, -Math.sign(state.throttle) * current));
   setBodyThrust(world, e, [push + brakeForce * Math.cos(angle), -brakeForce * Math.sin(angle)]);
 }
 
