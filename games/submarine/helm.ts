@@ -64,6 +64,11 @@ export interface HelmInput {
    */
   drive?: number;
   /**
+   * The pitch asked for by the nose trim, rad (positive: nose up; ./helm.ts noseTrim), in place of
+   * `noseDown` / `noseUp` when given and not 0: the boat is steered by the nose at that angle.
+   */
+  nose?: number;
+  /**
    * The screw keeps its throttle while neither Ahead nor Astern is held (default false: it winds
    * down and the boat glides to a stop). The on-screen stick sets it while it is pushed up or down
    * but not sideways, so that rising or diving by the stick under way does not stop the screw.
@@ -333,6 +338,31 @@ export function keyHeaveShare(since: number, now: number, u = 0): number {
 
 const clamp = (v: number, lo: number, hi: number): number => (v < lo ? lo : v > hi ? hi : v);
 
+/**
+ * The nose trim's step per press of a Nose key or button, rad (5 degrees): every tap turns the boat
+ * that much more and it stays so (a tap that only held the nose while pressed turned it 1.1 degrees,
+ * and it levelled again: a stranger saw nothing).
+ */
+export const NOSE_STEP = 5 * DEG;
+/** How fast a Nose key or button held on turns the trim on, rad/s (10 degrees a second, to HELM.noseAngle). */
+export const NOSE_RATE = 10 * DEG;
+
+/**
+ * The nose trim after a step of `dt` s, rad (positive: nose up), from `trim`: a new press (`press`:
+ * 1 Nose up, -1 Nose down, 0 none this step) adds NOSE_STEP that way; a Nose key held (`held`, the
+ * same signs) turns it on at NOSE_RATE; within +-HELM.noseAngle. The helm pitches the boat to it
+ * (`HelmInput.nose`) and, under way, the boat follows its nose; Dive or Rise clears it (the page).
+ * @throws RangeError when `trim` or `dt` is not finite or `dt` is negative.
+ */
+export function noseTrim(trim: number, press: -1 | 0 | 1, held: -1 | 0 | 1, dt: number): number {
+  if (!Number.isFinite(trim)) throw new RangeError(`noseTrim: trim must be finite rad, got ${trim}`);
+  if (!(Number.isFinite(dt) && dt >= 0)) throw new RangeError(`noseTrim: dt must be finite s >= 0, got ${dt}`);
+  const next = trim + press * NOSE_STEP + held * NOSE_RATE * dt;
+  // A step back through level stops at level, so a tap the other way always levels a small trim.
+  const level = press !== 0 && Math.sign(trim) === -press && Math.sign(next) === press;
+  return level ? 0 : clamp(next, -HELM.noseAngle, HELM.noseAngle);
+}
+
 /** The distance a boat at vertical speed `vy` (m/s) stops in at the deceleration `brake` (m/s^2, > 0), m. */
 export function stopping(vy: number, brake: number = HELM.brake): number {
   return (vy * vy) / (2 * brake);
@@ -444,7 +474,7 @@ export function steer(world: PhysicsWorld, handles: SubmarineHandles, input: Hel
     // (the speed from which it stops at half the planned deceleration, and holdGain per metre near it).
     const below = Math.max(0, surface - top);
     vCmd = Math.min(ask, HELM.surfacingSpeed + Math.min(HELM.holdGain * below, Math.sqrt(brake * below)));
-  } else if (input.noseDown !== input.noseUp) {
+  } else if (input.noseDown !== input.noseUp || (input.nose ?? 0) !== 0) {
     // Steering by the nose: no depth held, so with the screw ahead the boat follows its nose.
     state.mode = 'steering';
   } else {
@@ -487,7 +517,7 @@ export function steer(world: PhysicsWorld, handles: SubmarineHandles, input: Hel
 
   // Pitch: the angle asked for (positive: nose up), by the thrusters now and by the water for good.
   const pitch =
-    HELM.noseAngle * (Number(input.noseUp) - Number(input.noseDown)) +
+    (input.nose ? clamp(input.nose, -HELM.noseAngle, HELM.noseAngle) : HELM.noseAngle * (Number(input.noseUp) - Number(input.noseDown))) +
     HELM.diveAngle *
       (1 + Math.min(1, Math.abs(u) / KEY_HEAVE_FULL_SPEED)) *
       (Number(state.mode === 'rising') - Number(state.mode === 'diving'));

@@ -19,7 +19,7 @@
  * boat's course within MINE_WARN_TIME s (at least MINE_LOOK_AHEAD m) is told by the hull: a red
  * arrow from it to the mine, a tag over the sail ("rise over") or under the keel ("dive under") and a low two-note call.
  * Keys: S / W or down / up arrows dive / rise, A / D or left / right arrows astern / ahead, Q / E
- * nose down / up, P pause, N step, R reset. Touch: a stick under the scene (down dives, up rises,
+ * nose down / up (each press tilts it 5° more and it stays; Dive or Rise levels it), P pause, N step, R reset. Touch: a stick under the scene (down dives, up rises,
  * right ahead, left astern; pushed part way it asks for part of the speed; up or down only keeps the
  * screw running as it was) and Nose buttons.
  * Sound: the screw's hum follows the throttle, a hiss when the vents open or the tanks blow, a sonar
@@ -62,7 +62,7 @@ import {
 import { drawBoat, HEADLIGHT, inHeadlight } from './boat-drawing';
 import { CURRENT_NOTE_LIFE, CURRENT_NOTE_SPEED, currentAt, currentMark, currentNote, drawCurrent, driftInCurrent } from './current';
 import { type EdgeMark, edgeMarks } from './edge-marks';
-import { coastDistance, createHelmState, HELM, type HelmInput, keyHeaveShare, NO_INPUT, steer } from './helm';
+import { coastDistance, createHelmState, HELM, type HelmInput, keyHeaveShare, NO_INPUT, noseTrim, steer } from './helm';
 import { createLevelStop, LEVEL_BAND, levelStop, levelWith } from './level-stop';
 import { bestTimes, LEVELS, levelCourse, MAX_BEACONS, MAX_BEST_TIME } from './levels';
 import {
@@ -404,6 +404,8 @@ function createWorld(): PhysicsWorld {
   Object.assign(levelHold, createLevelStop());
   scrapeAt = Number.NaN;
   pickups.length = 0;
+  trim = 0;
+  nosePresses.length = 0;
   return world;
 }
 
@@ -452,8 +454,13 @@ function timeControls(stamp: number): void {
   heaveTiming.event(heaveAsked(), stamp, pausedNow());
   driveTiming.event(driveAsked(), stamp, pausedNow());
 }
+/** Nose presses (Q / E, the Nose buttons) not yet taken by a step: each +1 (up) or -1 (down) steps the trim (./helm.ts noseTrim). */
+const nosePresses: (-1 | 1)[] = [];
+/** The nose trim now, rad (positive: nose up; ./helm.ts noseTrim): the pitch the helm holds, shown on the status line. */
+let trim = 0;
 addEventListener('keydown', (e) => {
   const k = e.key.toLowerCase();
+  if (!held.has(k) && (k === 'q' || k === 'e') && !pausedNow()) nosePresses.push(k === 'e' ? 1 : -1);
   if (!held.has(k)) held.set(k, ++pressCount);
   timeControls(e.timeStamp);
 });
@@ -499,8 +506,8 @@ function heldInput(now: number, drive: -1 | 0 | 1): HelmInput {
   return {
     dive: heave < 0,
     rise: heave > 0,
-    noseDown: held.has('q'),
-    noseUp: held.has('e'),
+    noseDown: false,
+    noseUp: false,
     ahead: drive > 0,
     astern: drive < 0,
     // The stick grades the dive or climb up to what a key asks for (./helm.ts keyHeaveShare) and no
@@ -584,6 +591,10 @@ function stepWorld(world: PhysicsWorld): void {
   else if (asked.dive !== asked.rise) lastHeave = asked.heave ?? 1;
   if (drive !== 0 && driveAsked() === 0) asked.drive = lastDrive;
   else if (drive !== 0) lastDrive = asked.drive ?? 1;
+  // The nose trim: each press steps it, a key held on turns it on; Dive or Rise (or the end) clears it.
+  trim = noseTrim(trim, nosePresses.shift() ?? 0, keyAxis(['q'], ['e']), world.dt);
+  if (asked.dive || asked.rise || timed.dir !== 0 || state.over) trim = 0;
+  asked.nose = trim;
   let input = state.over ? NO_INPUT : seabedInput(state, asked);
   asternHeld = input.astern && !input.ahead;
   if (!Number.isNaN(timed.letGoAt) && (state.mode === 'diving' || state.mode === 'rising'))
@@ -624,7 +635,7 @@ function stepWorld(world: PhysicsWorld): void {
   driveTiming.clock(world.time, performance.now());
   if (state.over) return;
   // The clock starts with the first control held, not when the page loads.
-  const anyHeld = input.dive || input.rise || input.noseDown || input.noseUp || input.ahead || input.astern;
+  const anyHeld = input.dive || input.rise || (input.nose ?? 0) !== 0 || input.ahead || input.astern;
   if (Number.isNaN(state.startedAt) && anyHeld) state.startedAt = world.time;
   const before = state.time;
   state.time = Number.isNaN(state.startedAt) ? 0 : world.time - state.startedAt;
@@ -848,7 +859,7 @@ const game = await startPixiGame({
   controls: [
     { keys: '↓ ↑ / S W', action: 'dive / rise (let go: stop at the line)', touch: 'stick ↓ ↑' },
     { keys: '← → / A D', action: 'screw astern / ahead', touch: 'stick ← →' },
-    { keys: 'Q / E', action: 'nose down / up', touch: 'Nose ↘ / ↗' },
+    { keys: 'Q / E', action: 'nose down / up, 5° a tap (Dive or Rise levels it)', touch: 'Nose ↘ / ↗' },
     { keys: 'mouse', action: 'press and drag on the sea: steer like a stick', touch: '' },
     { keys: '◯', action: 'beacon: touch its yellow ring with any part of the boat to collect it', touch: '◯' },
     { keys: '●', action: GLOW_LEGEND, touch: '●' },
@@ -3187,9 +3198,12 @@ function draw(): void {
   // The speed is over the ground (the hull's own velocity); the water's, where it flows, beside it
   // ("current ◀2.4 m/s", as the current's note tells it), so a boat held back by the current is seen to be, not only felt.
   const water = currentMark(currentAt(params.level, c.Position.y[e]!));
+  // The nose trim (./helm.ts noseTrim) while set: which way and how far, so every Nose tap shows.
+  const nose = Math.round((trim * 180) / Math.PI);
+  const noseMark = nose === 0 ? '' : `${nose < 0 ? '↘' : '↗'}${Math.abs(nose)}°`;
   readoutText.textContent = compact
-    ? `${Math.max(0, depth).toFixed(0)}${ordered.replace(/ /g, '')} m ${speedMark(c.Velocity.x[e]!)}${water ? ` ${water.replace('current ', '≋')}` : ''}${stopped ? ' · seabed' : ''} · ${state.score} · `
-    : `${Math.max(0, depth).toFixed(0)}${ordered} m${stopped} · ${speedWords(c.Velocity.x[e]!)}${water ? ` over ground, ${water}` : ''} · ${state.score} pts${streak} · `;
+    ? `${Math.max(0, depth).toFixed(0)}${ordered.replace(/ /g, '')} m ${speedMark(c.Velocity.x[e]!)}${noseMark ? ` ${noseMark}` : ''}${water ? ` ${water.replace('current ', '≋')}` : ''}${stopped ? ' · seabed' : ''} · ${state.score} · `
+    : `${Math.max(0, depth).toFixed(0)}${ordered} m${stopped} · ${speedWords(c.Velocity.x[e]!)}${water ? ` over ground, ${water}` : ''}${noseMark ? ` · nose ${noseMark}` : ''} · ${state.score} pts${streak} · `;
   showHull();
   seabedLine.textContent = `seabed ${(-floor).toFixed(0)} m`;
   physicsText.textContent = [
