@@ -64,6 +64,13 @@ export interface HelmInput {
    */
   drive?: number;
   /**
+   * The depth ordered directly, as the hull's height, m (./stick.ts stickOrder: the on-screen stick
+   * moves it and the gauge marks it): the helm takes the boat there at up to `heave` of the dive or
+   * climb speed and levels on it, as it does on a let-go order. Unset or NaN: none (Dive / Rise and
+   * the order they move rule).
+   */
+  orderY?: number;
+  /**
    * The pitch asked for by the nose trim, rad (positive: nose up; ./helm.ts noseTrim), in place of
    * `noseDown` / `noseUp` when given and not 0: the boat is steered by the nose at that angle.
    */
@@ -443,6 +450,9 @@ export function steer(world: PhysicsWorld, handles: SubmarineHandles, input: Hel
   const top = y + S.height / 2; // the deck's height (level hull), m
   const dive = input.dive && !input.rise,
     rise = input.rise && !input.dive;
+  // Afloat: the deck out, or bobbing within surfaceBand of the surface since it surfaced.
+  const afloat = top > surface || (state.mode === 'surfaced' && top > surface - HELM.surfaceBand);
+  const ordered = dive || rise ? Number.NaN : (input.orderY ?? Number.NaN);
   const neutral = SUBMARINE_NEUTRAL_FILL;
 
   // The boat under way brakes harder: its planes (./planes.ts) add up to their lift at full angle.
@@ -461,7 +471,17 @@ export function steer(world: PhysicsWorld, handles: SubmarineHandles, input: Hel
     // Never ordered into the seabed: at least the hold's clearance over the bed under the hull.
     state.holdY = Math.max(state.holdY, holdFloor(handles.seabed, c.Position.x[e]!, 0));
     vCmd = -ask;
-  } else if (top > surface || (state.mode === 'surfaced' && top > surface - HELM.surfaceBand)) {
+  } else if (Number.isFinite(ordered) && !(afloat && ordered >= y - HELM.orderLead)) {
+    // The stick's order (input.orderY): to it at up to the asked speed, slowing onto it as on a
+    // let-go order (approach); the bow dips or rises as a held Dive or Rise does while it goes.
+    // Never ordered into the seabed, and slower near the surface as a held Rise is.
+    state.holdY = Math.max(ordered, holdFloor(handles.seabed, c.Position.x[e]!, c.Velocity.x[e]!));
+    const error = state.holdY - y;
+    state.mode = error < -HELM.orderLead ? 'diving' : error > HELM.orderLead ? 'rising' : 'holding';
+    vCmd = approach(error, (error < 0 ? HELM.diveSpeed : HELM.climbSpeed) * heaveAsked, brake);
+    const below = Math.max(0, surface - top);
+    if (vCmd > 0) vCmd = Math.min(vCmd, HELM.surfacingSpeed + Math.min(HELM.holdGain * below, Math.sqrt(brake * below)));
+  } else if (afloat) {
     // On the surface and not told to dive: tanks blown, the boat floats (Rise there does the same).
     // It stays surfaced while it bobs within surfaceBand of the surface.
     state.mode = 'surfaced';

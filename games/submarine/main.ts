@@ -62,7 +62,7 @@ import {
 import { drawBoat, HEADLIGHT, inHeadlight } from './boat-drawing';
 import { CURRENT_NOTE_LIFE, CURRENT_NOTE_SPEED, currentAt, currentMark, currentNote, drawCurrent, driftInCurrent } from './current';
 import { type EdgeMark, edgeMarks } from './edge-marks';
-import { coastDistance, createHelmState, HELM, type HelmInput, keyHeaveShare, NO_INPUT, noseTrim, steer } from './helm';
+import { coastDistance, createHelmState, HELM, type HelmInput, holdFloor, keyHeaveShare, NO_INPUT, noseTrim, steer } from './helm';
 import { createLevelStop, LEVEL_BAND, levelStop, levelWith } from './level-stop';
 import { bestTimes, LEVELS, levelCourse, MAX_BEACONS, MAX_BEST_TIME } from './levels';
 import {
@@ -82,7 +82,7 @@ import { pauseBandTop } from './pause-band';
 import { createHeaveTiming, createPressTiming, releasedOrder } from './release';
 import { drawFish } from './sea-life';
 import { type BedAhead, bedAhead, DIVE_STOPPED_WORD, helmWord, seabedInput, touchSeabed } from './seabed';
-import { stickDirection, stickShare } from './stick';
+import { stickDirection, stickOrder, stickShare } from './stick';
 import { type Glow, layTrail, touchesGlow } from './trail';
 
 const params = {
@@ -406,6 +406,7 @@ function createWorld(): PhysicsWorld {
   pickups.length = 0;
   trim = 0;
   nosePresses.length = 0;
+  stickDepth = Number.NaN;
   return world;
 }
 
@@ -439,11 +440,16 @@ const driveTiming = createPressTiming();
 let lastHeave = 1;
 /** The share of the throttle Ahead / Astern asked for on its last step held (a let-go press runs on at it). */
 let lastDrive = 1;
-/** Dive or Rise as the keys and the stick ask for it now: -1 dive, 1 rise, 0 neither; a key before the stick. */
+/** Dive or Rise as the keys ask for it now: -1 dive, 1 rise, 0 neither (the stick moves its own order: stickHeave). */
 function heaveAsked(): -1 | 0 | 1 {
-  const key = keyAxis(['s', 'arrowdown'], ['w', 'arrowup']);
-  return key !== 0 ? key : stickDirection(stickInput.y, stickInput.x);
+  return keyAxis(['s', 'arrowdown'], ['w', 'arrowup']);
 }
+/** The stick pushed down (-1) or up (1) to move its depth order (./stick.ts stickOrder), 0 neither; 0 while a Dive or Rise key is held. */
+function stickHeave(): -1 | 0 | 1 {
+  return heaveAsked() !== 0 ? 0 : stickDirection(stickInput.y, stickInput.x);
+}
+/** The depth the stick orders, as the hull's height, m (./stick.ts stickOrder; NaN while none): the helm takes the boat there and levels on it. */
+let stickDepth = Number.NaN;
 /** Ahead or Astern as the keys and the stick ask for it now: 1 ahead, -1 astern, 0 neither; a key before the stick. */
 function driveAsked(): -1 | 0 | 1 {
   const key = keyAxis(['a', 'arrowleft'], ['d', 'arrowright']);
@@ -512,9 +518,10 @@ function heldInput(now: number, drive: -1 | 0 | 1): HelmInput {
     astern: drive < 0,
     // The stick grades the dive or climb up to what a key asks for (./helm.ts keyHeaveShare) and no
     // further, so a thumb at the rim and a held key take the boat down alike.
+    // Let go, the boat goes on to the stick's order at what a key asks for.
     heave: heaveKey
       ? keyHeaveShare(heaveKeySince, now, speedAhead())
-      : Math.min(stickShare(stickInput.y, false), keyHeaveShare(now, now, speedAhead())),
+      : Math.min(stickHeave() !== 0 ? stickShare(stickInput.y, false) : 1, keyHeaveShare(now, now, speedAhead())),
     drive: stickShare(stickInput.x, held.has('a') || held.has('d') || held.has('arrowleft') || held.has('arrowright')),
     // The stick pushed up or down only keeps the screw as it is (pushing it straight up to rise does
     // not stop the screw); a thumb lifted or resting at the centre lets the screw wind down as a key
@@ -593,31 +600,50 @@ function stepWorld(world: PhysicsWorld): void {
   else if (drive !== 0) lastDrive = asked.drive ?? 1;
   // The nose trim: each press steps it, a key held on turns it on; Dive or Rise (or the end) clears it.
   trim = noseTrim(trim, nosePresses.shift() ?? 0, keyAxis(['q'], ['e']), world.dt);
-  if (asked.dive || asked.rise || timed.dir !== 0 || state.over) trim = 0;
+  const byStick = state.over ? 0 : stickHeave();
+  if (asked.dive || asked.rise || timed.dir !== 0 || byStick !== 0 || state.over) trim = 0;
   asked.nose = trim;
+  // The stick's depth order (./stick.ts stickOrder): pushed, it moves (never into the seabed nor
+  // above the surface); let go, the helm takes the boat to it. A key, the nose or the end clear it.
+  const c0 = world.components,
+    hull = handles.hull;
+  if (asked.dive || asked.rise || timed.dir !== 0 || trim !== 0 || state.over) stickDepth = Number.NaN;
+  else if (byStick !== 0) {
+    const surface = c0.FluidRegion.surface[handles.sea]!;
+    stickDepth = stickOrder(
+      stickDepth,
+      byStick,
+      stickShare(stickInput.y, false),
+      world.dt,
+      c0.Position.y[hull]!,
+      state.holdY,
+      holdFloor(handles.seabed, c0.Position.x[hull]!, 0),
+      surface - SUBMARINE.height / 2 + 0.5,
+    );
+  }
   let input = state.over ? NO_INPUT : seabedInput(state, asked);
   asternHeld = input.astern && !input.ahead;
   if (!Number.isNaN(timed.letGoAt) && (state.mode === 'diving' || state.mode === 'rising'))
     state.holdY = releasedOrder(state.holdY, heaveTiming.orderAt(timed.letGoAt), state.mode);
-  // The target's depth stops a held Dive or Rise (./level-stop.ts): the boat holds level with the
-  // beacon a moment, so a player who lets go on seeing it there stops on it.
-  const c0 = world.components,
-    hull = handles.hull;
+  // The target's depth stops a held Dive or Rise, or the stick's order (./level-stop.ts): the boat
+  // holds level with the beacon a moment, so a player who lets go on seeing it there stops on it.
   if (
     levelStop(levelHold, {
-      dir: input.dive === input.rise ? 0 : input.dive ? -1 : 1,
+      dir: input.dive === input.rise ? byStick : input.dive ? -1 : 1,
       now: world.time,
       beacon: aim.index,
       beaconY: aim.index >= 0 ? handles.beacons[2 * aim.index + 1]! : Number.NaN,
-      order: state.holdY,
+      order: input.dive === input.rise && byStick !== 0 ? stickDepth : state.holdY,
       y: c0.Position.y[hull]!,
       vy: c0.Velocity.y[hull]!,
       warned: ahead !== null || bedWarn !== null,
     })
   ) {
     state.holdY = handles.beacons[2 * aim.index + 1]!;
+    if (Number.isFinite(stickDepth)) stickDepth = state.holdY;
     input = { ...input, dive: false, rise: false };
   }
+  if (Number.isFinite(stickDepth) && !state.over) input = { ...input, orderY: stickDepth };
   const vertical = input.dive === input.rise ? 0 : input.dive ? -1 : 1;
   if (vertical !== 0 && vertical !== lastVertical) sound.launch(0.25);
   lastVertical = vertical;
@@ -627,6 +653,9 @@ function stepWorld(world: PhysicsWorld): void {
   steer(world, handles, input, state, water);
   driftInCurrent(world, handles, water);
   if (state.mode === 'diving' || state.mode === 'rising') heaveTiming.note(world.time, state.holdY);
+  // The stick's order reached (the boat level on it) or the boat afloat: the helm holds on alone.
+  const reached = Math.abs(c0.Position.y[hull]! - state.holdY) < 0.3 && Math.abs(c0.Velocity.y[hull]!) < 0.3;
+  if (byStick === 0 && (state.mode === 'surfaced' || reached)) stickDepth = Number.NaN;
   // Waves: the sea's surface bobs (the hull rides it).
   const sea = world.components.FluidRegion;
   sea.surface[handles.sea] = params.waveHeight * 0.5 * Math.sin(0.9 * world.time);
@@ -663,6 +692,7 @@ function stepWorld(world: PhysicsWorld): void {
   if (contact !== '') {
     // The helm brakes and holds the depth it stops at, above the contact.
     state.holdY = Number.NaN;
+    stickDepth = Number.NaN;
     if (!wasTouching || contact === 'hit') {
       sound.impact(contact === 'hit' ? 20 : 6, 'metal');
       buzz(contact === 'hit' ? HIT_BUZZ_MS : SCRAPE_BUZZ_MS);
@@ -2008,6 +2038,8 @@ function declutter(H: number, hull: readonly number[]): void {
     if (aim.badge[2]! > 0) take('badge', aim.badge);
   }
   if (gaugeDepth?.visible) take('depth', boxOf(gaugeDepth));
+  if (orderTag.visible && clear(boxOf(orderTag))) take('order', boxOf(orderTag));
+  else orderTag.visible = false;
   for (const [name, note] of [
     ['glow hint', glowNote],
     ['current note', currentNoteEl],
@@ -2255,6 +2287,9 @@ const LADDER_FADE = 0.4;
  * player sees how far it has gone and has to go. Fades in and out over LADDER_FADE s of game time
  * `t`; `sx` / `sy` map world x / y (m) to screen px, (hxw, hyw) is the hull's centre, m.
  */
+/** The depth the boat will level at, by the ladder's cyan bar ("level 18 m"): shown while it is over a metre off the boat. */
+const orderTag = gaugeText(compact ? 14 : 12);
+orderTag.style.fill = 0x7fe3ff;
 function drawDepthLadder(t: number, sx: (x: number) => number, sy: (y: number) => number, hxw: number, hyw: number): void {
   const c = shell.world.components,
     vy = c.Velocity.y[handles.hull]!;
@@ -2298,11 +2333,28 @@ function drawDepthLadder(t: number, sx: (x: number) => number, sy: (y: number) =
         mark.visible = true;
       }
     }
-    if (Number.isFinite(order) && Math.abs(order - hyw) > 0.3)
+    if (Number.isFinite(order) && Math.abs(order - hyw) > 0.3) {
       g.roundRect(px - 11, sy(order) - 2, 22, 4, 2)
         .fill({ color: 0x7fe3ff, alpha: ladder.alpha })
         .stroke({ color: 0x06213a, width: 1, alpha: ladder.alpha });
+      // Where the boat will level: a dashed cyan line at the order's depth along the hull's length,
+      // and its depth beside the ladder ("level 18 m"), so the mark the stick moves reads at a glance.
+      const oy = sy(order),
+        bow = sx(hxw + SUBMARINE.length / 2);
+      for (let x0 = px + 12; x0 < bow; x0 += 10) g.moveTo(x0, oy).lineTo(Math.min(bow, x0 + 6), oy);
+      g.stroke({ color: 0x7fe3ff, width: 2, alpha: 0.8 * ladder.alpha });
+      if (Math.abs(order - hyw) > 1) {
+        orderTag.text = `level ${Math.max(0, -order).toFixed(0)} m`;
+        // Left of the ladder, or past the bow where that would run off the view's left edge.
+        const left = px - 14 - orderTag.width >= 4;
+        orderTag.anchor.set(left ? 1 : 0, 0.5);
+        orderTag.position.set(left ? px - 14 : bow + 6, oy);
+        orderTag.alpha = ladder.alpha;
+        orderTag.visible = true;
+      }
+    }
   }
+  if (!(ladder.alpha > 0 && Number.isFinite(order) && Math.abs(order - hyw) > 1)) orderTag.visible = false;
   for (let i = used; i < ladderMarks.length; i++) ladderMarks[i]!.visible = false;
 }
 let lastFill = [0, 0];
