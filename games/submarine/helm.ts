@@ -274,9 +274,17 @@ export function coastBrake(mass: number, u: number, throttle: number, astern = f
 }
 
 /**
+ * The least share of the screw's full push (`SUBMARINE.maxThrust`) the governor may use to reach the
+ * speed a small throttle asks for: 0.5. At the throttle's own share (0.15 for the stick's least push
+ * astern: 60 kN for 110 t) a boat stopped in a 0.9 m/s current took 4 s to back at 1.2 m/s over the
+ * ground, and a stranger read it as doing nothing.
+ */
+export const SCREW_LEAST_SHARE = 0.5;
+
+/**
  * The screw's push along the hull, N (positive ahead), for a boat of `mass` kg moving at `u` m/s
  * ahead through the water (horizontally, positive ahead) with the throttle at `throttle` (fraction
- * of full, in [-HELM.asternShare, 1]): the throttle's share of `SUBMARINE.maxThrust`, but no more
+ * of full, in [-HELM.asternShare, 1]): the throttle's share of `SUBMARINE.maxThrust` (at least SCREW_LEAST_SHARE of it), but no more
  * than holds the boat at the speed ahead the throttle asks for (`throttle` times `HELM.topSpeed`):
  * the drag there (k |v| v_x, the scene's drag coefficient k, with `vy` the boat's vertical speed,
  * m/s: a diving boat drags more) plus m (v_asked - u) / `HELM.speedTime`, pushed along a hull
@@ -300,7 +308,9 @@ export function screwPush(mass: number, u: number, throttle: number, vy = 0, ang
     asked = Math.abs(t) * HELM.topSpeed + Math.max(0, Number.isFinite(against) ? against : 0);
   const ahead = SUBMARINE.dragCoefficient * asked * Math.hypot(asked, vy) + (mass * (asked - sign * u)) / HELM.speedTime;
   // Along the hull: a pitched hull's push has cos(angle) of it ahead (at most 60 degrees counted).
-  return sign * clamp(ahead / Math.max(0.5, Math.cos(angle)), 0, Math.abs(t) * SUBMARINE.maxThrust);
+  // At most the throttle's share of the screw, but never under SCREW_LEAST_SHARE of it: a small
+  // push still gets up to its own (small) speed within a second or two, against a current too.
+  return sign * clamp(ahead / Math.max(0.5, Math.cos(angle)), 0, Math.max(Math.abs(t), SCREW_LEAST_SHARE) * SUBMARINE.maxThrust);
 }
 
 /**

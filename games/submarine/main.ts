@@ -889,7 +889,7 @@ const game = await startPixiGame({
   controls: [
     { keys: '↓ ↑ / S W', action: 'dive / rise (let go: stop at the line)', touch: 'stick ↓ ↑' },
     { keys: '← → / A D', action: 'screw astern / ahead', touch: 'stick ← →' },
-    { keys: 'Q / E', action: 'nose down / up, 5° a tap (Dive or Rise levels it)', touch: 'Nose ↘ / ↗' },
+    { keys: 'Q / E', action: 'tilt 5° a tap', touch: 'Nose ↘ / ↗' },
     { keys: 'mouse', action: 'press and drag on the sea: steer like a stick', touch: '' },
     { keys: '◯', action: 'beacon: touch its yellow ring with any part of the boat to collect it', touch: '◯' },
     { keys: '●', action: GLOW_LEGEND, touch: '●' },

@@ -109,6 +109,19 @@ describe('submarine currents', () => {
     expect(full).toBeLessThan(-0.8 * 0.75 * 8);
     // With the current the asked speed through the water is not cut: the water adds to it.
     expect(run(-1.2, 1)).toBeLessThan(-0.75 * 8 - 0.8);
+    // From 7 m/s ahead in a 0.9 m/s current, the least push astern: backing at over 1 m/s over the
+    // ground within 2.5 s (the screw at no less than SCREW_LEAST_SHARE of its push; at the throttle's
+    // own 0.15 it was still going ahead at 0.09 m/s then, and reached 1 m/s only after 4 s).
+    const b = hovering(-21);
+    b.c.Velocity.x[b.e] = 7;
+    b.helm.throttle = 0.9;
+    for (let i = 0; i < 2.5 / b.world.dt; i++) {
+      steer(b.world, b.h, { ...NO_INPUT, astern: true, drive: 0.2 }, b.helm, 0.9);
+      driftInCurrent(b.world, b.h, 0.9);
+      step(b.world);
+    }
+    console.log(`least push astern from 7 m/s ahead in 0.9 m/s: ${b.c.Velocity.x[b.e]!.toFixed(2)} m/s after 2.5 s`);
+    expect(b.c.Velocity.x[b.e]!).toBeLessThan(-1);
   });
 
   it('the current is named by the way it flows and its speed, and not at all where it is slack', () => {
