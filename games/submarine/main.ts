@@ -462,6 +462,10 @@ function timeControls(stamp: number): void {
 }
 /** Nose presses (Q / E, the Nose buttons) not yet taken by a step: each +1 (up) or -1 (down) steps the trim (./helm.ts noseTrim). */
 const nosePresses: (-1 | 1)[] = [];
+/** How long a Nose key has been held, s of game time (0 while none is). */
+let noseHeldFor = 0;
+/** A Nose key held longer than this, s, turns the trim on (./helm.ts NOSE_RATE); a shorter press is a tap: one step. */
+const NOSE_HOLD_DELAY = 0.3;
 /** The nose trim now, rad (positive: nose up; ./helm.ts noseTrim): the pitch the helm holds, shown on the status line. */
 let trim = 0;
 addEventListener('keydown', (e) => {
@@ -599,7 +603,10 @@ function stepWorld(world: PhysicsWorld): void {
   if (drive !== 0 && driveAsked() === 0) asked.drive = lastDrive;
   else if (drive !== 0) lastDrive = asked.drive ?? 1;
   // The nose trim: each press steps it, a key held on turns it on; Dive or Rise (or the end) clears it.
-  trim = noseTrim(trim, nosePresses.shift() ?? 0, keyAxis(['q'], ['e']), world.dt);
+  // A Nose key held on past NOSE_HOLD_DELAY turns the trim on; a tap is its step alone.
+  const noseHeld = keyAxis(['q'], ['e']);
+  noseHeldFor = noseHeld === 0 ? 0 : noseHeldFor + world.dt;
+  trim = noseTrim(trim, nosePresses.shift() ?? 0, noseHeldFor > NOSE_HOLD_DELAY ? noseHeld : 0, world.dt);
   const byStick = state.over ? 0 : stickHeave();
   if (asked.dive || asked.rise || timed.dir !== 0 || byStick !== 0 || state.over) trim = 0;
   asked.nose = trim;
