@@ -2347,7 +2347,8 @@ function drawDepthLadder(t: number, sx: (x: number) => number, sy: (y: number) =
       // Where the boat will level: a dashed cyan line at the order's depth along the hull's length,
       // and its depth beside the ladder ("level 18 m"), so the mark the stick moves reads at a glance.
       const oy = sy(order),
-        bow = sx(hxw + SUBMARINE.length / 2);
+        // (Inside the view: a hull put far off it would have the dashes run on for millions of px.)
+        bow = Math.min(app.screen.width, sx(hxw + SUBMARINE.length / 2));
       for (let x0 = px + 12; x0 < bow; x0 += 10) g.moveTo(x0, oy).lineTo(Math.min(bow, x0 + 6), oy);
       g.stroke({ color: 0x7fe3ff, width: 2, alpha: 0.8 * ladder.alpha });
       if (Math.abs(order - hyw) > 1) {
