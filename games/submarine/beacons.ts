@@ -164,10 +164,31 @@ export function passedBeacon(beacons: ArrayLike<number>, i: number, x: number, v
 export const TURNED_BACK = 2 * BEACON_CATCH + SUBMARINE.length;
 
 /**
+ * How near behind the hull (along x, m) a skipped beacon must be for a boat backing towards it to
+ * take it as its target (`chooseBeacon`): 25 m, about half a phone's view at rest (60 m across).
+ * Further back the target stays the beacon ahead the player was going for, so braking with Astern
+ * or backing a little does not swing the label round to a beacon skipped far behind.
+ */
+export const BACK_REACH = 25;
+
+/**
+ * The hull's speed along x as the beacon rules count it (`chooseBeacon`, `passedBeacon`), m/s:
+ * while the pilot asks for Astern (`astern`) only backing counts (min(`vx`, 0)); otherwise only
+ * going ahead (max(`vx`, 0)), so a boat carried back by a current, or coasting on after Astern is
+ * let go, is not taken to be turning back for a beacon behind it.
+ * @throws RangeError when `vx` is not finite.
+ */
+export function courseSpeed(vx: number, astern: boolean): number {
+  assertFinite('courseSpeed', 'vx', vx);
+  return astern ? Math.min(vx, 0) : Math.max(vx, 0);
+}
+
+/**
  * The beacon the pointer leads to from the hull at (x, y), m, moving along x at `vx` m/s. The target
  * is the beacon the boat is heading for. Backing (`vx` < -`MOVING_ON`), that is the nearest
  * uncollected beacon behind the hull (its x less than the hull's) when a beacon was collected this
- * step, or the target is collected or lies more than `TURNED_BACK` ahead: a player backing to fetch
+ * step, or (once that beacon is within `BACK_REACH` behind) the target is collected or lies more
+ * than `TURNED_BACK` ahead: a player backing to fetch
  * a skipped beacon who collects another on the way is led on to the skipped one, not to the next
  * one ahead (one who backs a little after braking short of the target keeps it). Otherwise
  * the target stays ahead of the boat: beacons passed (`passedBeacon`: far behind with the boat
@@ -198,7 +219,7 @@ export function chooseBeacon(
   if (vx < -MOVING_ON && !(held && beacons[2 * current]! - x <= TURNED_BACK)) {
     let back = -1;
     for (let i = 0; i < taken.length; i++) if (!taken[i] && behindHull(i) && (back < 0 || beacons[2 * i]! > beacons[2 * back]!)) back = i;
-    if (back >= 0) return back;
+    if (back >= 0 && (valid(justTaken) || x - beacons[2 * back]! <= BACK_REACH)) return back;
   }
   const open = (i: number) => !taken[i] && !passedBeacon(beacons, i, x, vx);
   if (!valid(justTaken) && valid(current) && open(current)) return current;

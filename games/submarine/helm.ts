@@ -64,6 +64,18 @@ export interface HelmInput {
    */
   drive?: number;
   /**
+   * The depth ordered directly, as the hull's height, m (./stick.ts stickOrder: the on-screen stick
+   * moves it and the gauge marks it): the helm takes the boat there at up to `heave` of the dive or
+   * climb speed and levels on it, as it does on a let-go order. Unset or NaN: none (Dive / Rise and
+   * the order they move rule).
+   */
+  orderY?: number;
+  /**
+   * The pitch asked for by the nose trim, rad (positive: nose up; ./helm.ts noseTrim), in place of
+   * `noseDown` / `noseUp` when given and not 0: the boat is steered by the nose at that angle.
+   */
+  nose?: number;
+  /**
    * The screw keeps its throttle while neither Ahead nor Astern is held (default false: it winds
    * down and the boat glides to a stop). The on-screen stick sets it while it is pushed up or down
    * but not sideways, so that rising or diving by the stick under way does not stop the screw.
@@ -262,18 +274,29 @@ export function coastBrake(mass: number, u: number, throttle: number, astern = f
 }
 
 /**
+ * The least share of the screw's full push (`SUBMARINE.maxThrust`) the governor may use to reach the
+ * speed a small throttle asks for: 0.5. At the throttle's own share (0.15 for the stick's least push
+ * astern: 60 kN for 110 t) a boat stopped in a 0.9 m/s current took 4 s to back at 1.2 m/s over the
+ * ground, and a stranger read it as doing nothing.
+ */
+export const SCREW_LEAST_SHARE = 0.5;
+
+/**
  * The screw's push along the hull, N (positive ahead), for a boat of `mass` kg moving at `u` m/s
  * ahead through the water (horizontally, positive ahead) with the throttle at `throttle` (fraction
- * of full, in [-HELM.asternShare, 1]): the throttle's share of `SUBMARINE.maxThrust`, but no more
+ * of full, in [-HELM.asternShare, 1]): the throttle's share of `SUBMARINE.maxThrust` (at least SCREW_LEAST_SHARE of it), but no more
  * than holds the boat at the speed ahead the throttle asks for (`throttle` times `HELM.topSpeed`):
  * the drag there (k |v| v_x, the scene's drag coefficient k, with `vy` the boat's vertical speed,
  * m/s: a diving boat drags more) plus m (v_asked - u) / `HELM.speedTime`, pushed along a hull
  * pitched by `angle` rad (so divided by cos(angle)), never pulling the other way. The speed asked is
  * the one ahead, not along the pitched hull: a boat diving with its bow down still makes the speed
- * ahead its throttle asks for. Zero with the throttle at zero.
+ * ahead its throttle asks for. Zero with the throttle at zero. `against`: the speed of a current
+ * flowing against the push, m/s (>= 0; default 0): the speed asked is made good over the ground, so
+ * it is asked through the water that much faster (a small push astern against a 1.2 m/s current
+ * made no headway at all).
  * @throws RangeError when `mass` is not a finite positive number, or `u`, `throttle`, `vy` or `angle` is not finite.
  */
-export function screwPush(mass: number, u: number, throttle: number, vy = 0, angle = 0): number {
+export function screwPush(mass: number, u: number, throttle: number, vy = 0, angle = 0, against = 0): number {
   if (!(Number.isFinite(mass) && mass > 0)) throw new RangeError(`screwPush: mass must be a finite number > 0 kg, got ${mass}`);
   if (!Number.isFinite(u)) throw new RangeError(`screwPush: u must be finite m/s, got ${u}`);
   if (!Number.isFinite(throttle)) throw new RangeError(`screwPush: throttle must be finite, got ${throttle}`);
@@ -282,10 +305,12 @@ export function screwPush(mass: number, u: number, throttle: number, vy = 0, ang
   const t = clamp(throttle, -HELM.asternShare, 1);
   if (t === 0) return 0;
   const sign = Math.sign(t),
-    asked = Math.abs(t) * HELM.topSpeed;
+    asked = Math.abs(t) * HELM.topSpeed + Math.max(0, Number.isFinite(against) ? against : 0);
   const ahead = SUBMARINE.dragCoefficient * asked * Math.hypot(asked, vy) + (mass * (asked - sign * u)) / HELM.speedTime;
   // Along the hull: a pitched hull's push has cos(angle) of it ahead (at most 60 degrees counted).
-  return sign * clamp(ahead / Math.max(0.5, Math.cos(angle)), 0, Math.abs(t) * SUBMARINE.maxThrust);
+  // At most the throttle's share of the screw, but never under SCREW_LEAST_SHARE of it: a small
+  // push still gets up to its own (small) speed within a second or two, against a current too.
+  return sign * clamp(ahead / Math.max(0.5, Math.cos(angle)), 0, Math.max(Math.abs(t), SCREW_LEAST_SHARE) * SUBMARINE.maxThrust);
 }
 
 /**
@@ -329,6 +354,31 @@ export function keyHeaveShare(since: number, now: number, u = 0): number {
 }
 
 const clamp = (v: number, lo: number, hi: number): number => (v < lo ? lo : v > hi ? hi : v);
+
+/**
+ * The nose trim's step per press of a Nose key or button, rad (5 degrees): every tap turns the boat
+ * that much more and it stays so (a tap that only held the nose while pressed turned it 1.1 degrees,
+ * and it levelled again: a stranger saw nothing).
+ */
+export const NOSE_STEP = 5 * DEG;
+/** How fast a Nose key or button held on turns the trim on, rad/s (10 degrees a second, to HELM.noseAngle). */
+export const NOSE_RATE = 10 * DEG;
+
+/**
+ * The nose trim after a step of `dt` s, rad (positive: nose up), from `trim`: a new press (`press`:
+ * 1 Nose up, -1 Nose down, 0 none this step) adds NOSE_STEP that way; a Nose key held (`held`, the
+ * same signs) turns it on at NOSE_RATE; within +-HELM.noseAngle. The helm pitches the boat to it
+ * (`HelmInput.nose`) and, under way, the boat follows its nose; Dive or Rise clears it (the page).
+ * @throws RangeError when `trim` or `dt` is not finite or `dt` is negative.
+ */
+export function noseTrim(trim: number, press: -1 | 0 | 1, held: -1 | 0 | 1, dt: number): number {
+  if (!Number.isFinite(trim)) throw new RangeError(`noseTrim: trim must be finite rad, got ${trim}`);
+  if (!(Number.isFinite(dt) && dt >= 0)) throw new RangeError(`noseTrim: dt must be finite s >= 0, got ${dt}`);
+  const next = trim + press * NOSE_STEP + held * NOSE_RATE * dt;
+  // A step back through level stops at level, so a tap the other way always levels a small trim.
+  const level = press !== 0 && Math.sign(trim) === -press && Math.sign(next) === press;
+  return level ? 0 : clamp(next, -HELM.noseAngle, HELM.noseAngle);
+}
 
 /** The distance a boat at vertical speed `vy` (m/s) stops in at the deceleration `brake` (m/s^2, > 0), m. */
 export function stopping(vy: number, brake: number = HELM.brake): number {
@@ -410,6 +460,9 @@ export function steer(world: PhysicsWorld, handles: SubmarineHandles, input: Hel
   const top = y + S.height / 2; // the deck's height (level hull), m
   const dive = input.dive && !input.rise,
     rise = input.rise && !input.dive;
+  // Afloat: the deck out, or bobbing within surfaceBand of the surface since it surfaced.
+  const afloat = top > surface || (state.mode === 'surfaced' && top > surface - HELM.surfaceBand);
+  const ordered = dive || rise ? Number.NaN : (input.orderY ?? Number.NaN);
   const neutral = SUBMARINE_NEUTRAL_FILL;
 
   // The boat under way brakes harder: its planes (./planes.ts) add up to their lift at full angle.
@@ -428,7 +481,17 @@ export function steer(world: PhysicsWorld, handles: SubmarineHandles, input: Hel
     // Never ordered into the seabed: at least the hold's clearance over the bed under the hull.
     state.holdY = Math.max(state.holdY, holdFloor(handles.seabed, c.Position.x[e]!, 0));
     vCmd = -ask;
-  } else if (top > surface || (state.mode === 'surfaced' && top > surface - HELM.surfaceBand)) {
+  } else if (Number.isFinite(ordered) && !(afloat && ordered >= y - HELM.orderLead)) {
+    // The stick's order (input.orderY): to it at up to the asked speed, slowing onto it as on a
+    // let-go order (approach); the bow dips or rises as a held Dive or Rise does while it goes.
+    // Never ordered into the seabed, and slower near the surface as a held Rise is.
+    state.holdY = Math.max(ordered, holdFloor(handles.seabed, c.Position.x[e]!, c.Velocity.x[e]!));
+    const error = state.holdY - y;
+    state.mode = error < -HELM.orderLead ? 'diving' : error > HELM.orderLead ? 'rising' : 'holding';
+    vCmd = approach(error, (error < 0 ? HELM.diveSpeed : HELM.climbSpeed) * heaveAsked, brake);
+    const below = Math.max(0, surface - top);
+    if (vCmd > 0) vCmd = Math.min(vCmd, HELM.surfacingSpeed + Math.min(HELM.holdGain * below, Math.sqrt(brake * below)));
+  } else if (afloat) {
     // On the surface and not told to dive: tanks blown, the boat floats (Rise there does the same).
     // It stays surfaced while it bobs within surfaceBand of the surface.
     state.mode = 'surfaced';
@@ -441,7 +504,7 @@ export function steer(world: PhysicsWorld, handles: SubmarineHandles, input: Hel
     // (the speed from which it stops at half the planned deceleration, and holdGain per metre near it).
     const below = Math.max(0, surface - top);
     vCmd = Math.min(ask, HELM.surfacingSpeed + Math.min(HELM.holdGain * below, Math.sqrt(brake * below)));
-  } else if (input.noseDown !== input.noseUp) {
+  } else if (input.noseDown !== input.noseUp || (input.nose ?? 0) !== 0) {
     // Steering by the nose: no depth held, so with the screw ahead the boat follows its nose.
     state.mode = 'steering';
   } else {
@@ -484,7 +547,7 @@ export function steer(world: PhysicsWorld, handles: SubmarineHandles, input: Hel
 
   // Pitch: the angle asked for (positive: nose up), by the thrusters now and by the water for good.
   const pitch =
-    HELM.noseAngle * (Number(input.noseUp) - Number(input.noseDown)) +
+    (input.nose ? clamp(input.nose, -HELM.noseAngle, HELM.noseAngle) : HELM.noseAngle * (Number(input.noseUp) - Number(input.noseDown))) +
     HELM.diveAngle *
       (1 + Math.min(1, Math.abs(u) / KEY_HEAVE_FULL_SPEED)) *
       (Number(state.mode === 'rising') - Number(state.mode === 'diving'));
@@ -517,7 +580,8 @@ export function steer(world: PhysicsWorld, handles: SubmarineHandles, input: Hel
   const ux = c.Velocity.x[e]! - current;
   const along = keep || (input.ahead && !input.astern && ux >= 0) || (input.astern && !input.ahead && ux <= 0);
   const brakeForce = along ? 0 : coastBrake(mass, ux, state.throttle, input.astern && !input.ahead);
-  const push = screwPush(mass, ux, state.throttle, vy, angle);
+  // Against the current the speed asked is made good over the ground (the screw pushes harder).
+  const push = screwPush(mass, ux, state.throttle, vy, angle, Math.max(0, -Math.sign(state.throttle) * current));
   setBodyThrust(world, e, [push + brakeForce * Math.cos(angle), -brakeForce * Math.sin(angle)]);
 }
 

@@ -19,7 +19,7 @@
  * boat's course within MINE_WARN_TIME s (at least MINE_LOOK_AHEAD m) is told by the hull: a red
  * arrow from it to the mine, a tag over the sail ("rise over") or under the keel ("dive under") and a low two-note call.
  * Keys: S / W or down / up arrows dive / rise, A / D or left / right arrows astern / ahead, Q / E
- * nose down / up, P pause, N step, R reset. Touch: a stick under the scene (down dives, up rises,
+ * nose down / up (each press tilts it 5° more and it stays; Dive or Rise levels it), P pause, N step, R reset. Touch: a stick under the scene (down dives, up rises,
  * right ahead, left astern; pushed part way it asks for part of the speed; up or down only keeps the
  * screw running as it was) and Nose buttons.
  * Sound: the screw's hum follows the throttle, a hiss when the vents open or the tanks blow, a sonar
@@ -50,6 +50,7 @@ import {
   beaconName,
   catchesBeacon,
   chooseBeacon,
+  courseSpeed,
   lastBeacon,
   layCourse,
   letGoHint,
@@ -61,7 +62,7 @@ import {
 import { drawBoat, HEADLIGHT, inHeadlight } from './boat-drawing';
 import { CURRENT_NOTE_LIFE, CURRENT_NOTE_SPEED, currentAt, currentMark, currentNote, drawCurrent, driftInCurrent } from './current';
 import { type EdgeMark, edgeMarks } from './edge-marks';
-import { coastDistance, createHelmState, HELM, type HelmInput, keyHeaveShare, NO_INPUT, steer } from './helm';
+import { coastDistance, createHelmState, HELM, type HelmInput, holdFloor, keyHeaveShare, NO_INPUT, noseTrim, steer } from './helm';
 import { createLevelStop, LEVEL_BAND, levelStop, levelWith } from './level-stop';
 import { bestTimes, LEVELS, levelCourse, MAX_BEACONS, MAX_BEST_TIME } from './levels';
 import {
@@ -81,7 +82,7 @@ import { pauseBandTop } from './pause-band';
 import { createHeaveTiming, createPressTiming, releasedOrder } from './release';
 import { drawFish } from './sea-life';
 import { type BedAhead, bedAhead, DIVE_STOPPED_WORD, helmWord, seabedInput, touchSeabed } from './seabed';
-import { stickDirection, stickShare } from './stick';
+import { stickDirection, stickOrder, stickShare } from './stick';
 import { type Glow, layTrail, touchesGlow } from './trail';
 
 const params = {
@@ -403,6 +404,9 @@ function createWorld(): PhysicsWorld {
   Object.assign(levelHold, createLevelStop());
   scrapeAt = Number.NaN;
   pickups.length = 0;
+  trim = 0;
+  nosePresses.length = 0;
+  stickDepth = Number.NaN;
   return world;
 }
 
@@ -436,11 +440,16 @@ const driveTiming = createPressTiming();
 let lastHeave = 1;
 /** The share of the throttle Ahead / Astern asked for on its last step held (a let-go press runs on at it). */
 let lastDrive = 1;
-/** Dive or Rise as the keys and the stick ask for it now: -1 dive, 1 rise, 0 neither; a key before the stick. */
+/** Dive or Rise as the keys ask for it now: -1 dive, 1 rise, 0 neither (the stick moves its own order: stickHeave). */
 function heaveAsked(): -1 | 0 | 1 {
-  const key = keyAxis(['s', 'arrowdown'], ['w', 'arrowup']);
-  return key !== 0 ? key : stickDirection(stickInput.y, stickInput.x);
+  return keyAxis(['s', 'arrowdown'], ['w', 'arrowup']);
 }
+/** The stick pushed down (-1) or up (1) to move its depth order (./stick.ts stickOrder), 0 neither; 0 while a Dive or Rise key is held. */
+function stickHeave(): -1 | 0 | 1 {
+  return heaveAsked() !== 0 ? 0 : stickDirection(stickInput.y, stickInput.x);
+}
+/** The depth the stick orders, as the hull's height, m (./stick.ts stickOrder; NaN while none): the helm takes the boat there and levels on it. */
+let stickDepth = Number.NaN;
 /** Ahead or Astern as the keys and the stick ask for it now: 1 ahead, -1 astern, 0 neither; a key before the stick. */
 function driveAsked(): -1 | 0 | 1 {
   const key = keyAxis(['a', 'arrowleft'], ['d', 'arrowright']);
@@ -451,8 +460,17 @@ function timeControls(stamp: number): void {
   heaveTiming.event(heaveAsked(), stamp, pausedNow());
   driveTiming.event(driveAsked(), stamp, pausedNow());
 }
+/** Nose presses (Q / E, the Nose buttons) not yet taken by a step: each +1 (up) or -1 (down) steps the trim (./helm.ts noseTrim). */
+const nosePresses: (-1 | 1)[] = [];
+/** How long a Nose key has been held, s of game time (0 while none is). */
+let noseHeldFor = 0;
+/** A Nose key held longer than this, s, turns the trim on (./helm.ts NOSE_RATE); a shorter press is a tap: one step. */
+const NOSE_HOLD_DELAY = 0.3;
+/** The nose trim now, rad (positive: nose up; ./helm.ts noseTrim): the pitch the helm holds, shown on the status line. */
+let trim = 0;
 addEventListener('keydown', (e) => {
   const k = e.key.toLowerCase();
+  if (!held.has(k) && (k === 'q' || k === 'e') && !pausedNow()) nosePresses.push(k === 'e' ? 1 : -1);
   if (!held.has(k)) held.set(k, ++pressCount);
   timeControls(e.timeStamp);
 });
@@ -469,12 +487,14 @@ let heaveKeySince = Number.NaN;
 
 /**
  * The way the boat is going along x for the beacons' skip rules (./beacons.ts passedBeacon,
- * chooseBeacon), m/s: its speed, but none ahead while Astern is held or the screw runs astern, so a player who turns
- * back on the "skipped in N m" warning keeps the beacon while the Astern brake still slows the boat.
+ * chooseBeacon, courseSpeed), m/s: its speed, but none ahead while Astern is held or the screw runs
+ * astern, so a player who turns back on the "skipped in N m" warning keeps the beacon while the
+ * Astern brake still slows the boat; and none astern otherwise, so a current carrying the boat back
+ * does not turn the target round to a beacon skipped behind it.
  */
 function goingX(): number {
   const vx = shell.world.components.Velocity.x[handles.hull]!;
-  return asternHeld || state.throttle < 0 ? Math.min(vx, 0) : vx;
+  return courseSpeed(vx, asternHeld || state.throttle < 0);
 }
 /** Whether the last step had Astern held (and not Ahead): the boat is being turned back (goingX). */
 let asternHeld = false;
@@ -496,15 +516,16 @@ function heldInput(now: number, drive: -1 | 0 | 1): HelmInput {
   return {
     dive: heave < 0,
     rise: heave > 0,
-    noseDown: held.has('q'),
-    noseUp: held.has('e'),
+    noseDown: false,
+    noseUp: false,
     ahead: drive > 0,
     astern: drive < 0,
     // The stick grades the dive or climb up to what a key asks for (./helm.ts keyHeaveShare) and no
     // further, so a thumb at the rim and a held key take the boat down alike.
+    // Let go, the boat goes on to the stick's order at what a key asks for.
     heave: heaveKey
       ? keyHeaveShare(heaveKeySince, now, speedAhead())
-      : Math.min(stickShare(stickInput.y, false), keyHeaveShare(now, now, speedAhead())),
+      : Math.min(stickHeave() !== 0 ? stickShare(stickInput.y, false) : 1, keyHeaveShare(now, now, speedAhead())),
     drive: stickShare(stickInput.x, held.has('a') || held.has('d') || held.has('arrowleft') || held.has('arrowright')),
     // The stick pushed up or down only keeps the screw as it is (pushing it straight up to rise does
     // not stop the screw); a thumb lifted or resting at the centre lets the screw wind down as a key
@@ -581,29 +602,55 @@ function stepWorld(world: PhysicsWorld): void {
   else if (asked.dive !== asked.rise) lastHeave = asked.heave ?? 1;
   if (drive !== 0 && driveAsked() === 0) asked.drive = lastDrive;
   else if (drive !== 0) lastDrive = asked.drive ?? 1;
+  // The nose trim: each press steps it, a key held on turns it on; Dive or Rise (or the end) clears it.
+  // A Nose key held on past NOSE_HOLD_DELAY turns the trim on; a tap is its step alone.
+  const noseHeld = keyAxis(['q'], ['e']);
+  noseHeldFor = noseHeld === 0 ? 0 : noseHeldFor + world.dt;
+  trim = noseTrim(trim, nosePresses.shift() ?? 0, noseHeldFor > NOSE_HOLD_DELAY ? noseHeld : 0, world.dt);
+  const byStick = state.over ? 0 : stickHeave();
+  if (asked.dive || asked.rise || timed.dir !== 0 || byStick !== 0 || state.over) trim = 0;
+  asked.nose = trim;
+  // The stick's depth order (./stick.ts stickOrder): pushed, it moves (never into the seabed nor
+  // above the surface); let go, the helm takes the boat to it. A key, the nose or the end clear it.
+  const c0 = world.components,
+    hull = handles.hull;
+  if (asked.dive || asked.rise || timed.dir !== 0 || trim !== 0 || state.over) stickDepth = Number.NaN;
+  else if (byStick !== 0) {
+    const surface = c0.FluidRegion.surface[handles.sea]!;
+    stickDepth = stickOrder(
+      stickDepth,
+      byStick,
+      stickShare(stickInput.y, false),
+      world.dt,
+      c0.Position.y[hull]!,
+      state.holdY,
+      holdFloor(handles.seabed, c0.Position.x[hull]!, 0),
+      surface - SUBMARINE.height / 2 + 0.5,
+    );
+  }
   let input = state.over ? NO_INPUT : seabedInput(state, asked);
   asternHeld = input.astern && !input.ahead;
   if (!Number.isNaN(timed.letGoAt) && (state.mode === 'diving' || state.mode === 'rising'))
     state.holdY = releasedOrder(state.holdY, heaveTiming.orderAt(timed.letGoAt), state.mode);
-  // The target's depth stops a held Dive or Rise (./level-stop.ts): the boat holds level with the
-  // beacon a moment, so a player who lets go on seeing it there stops on it.
-  const c0 = world.components,
-    hull = handles.hull;
+  // The target's depth stops a held Dive or Rise, or the stick's order (./level-stop.ts): the boat
+  // holds level with the beacon a moment, so a player who lets go on seeing it there stops on it.
   if (
     levelStop(levelHold, {
-      dir: input.dive === input.rise ? 0 : input.dive ? -1 : 1,
+      dir: input.dive === input.rise ? byStick : input.dive ? -1 : 1,
       now: world.time,
       beacon: aim.index,
       beaconY: aim.index >= 0 ? handles.beacons[2 * aim.index + 1]! : Number.NaN,
-      order: state.holdY,
+      order: input.dive === input.rise && byStick !== 0 ? stickDepth : state.holdY,
       y: c0.Position.y[hull]!,
       vy: c0.Velocity.y[hull]!,
       warned: ahead !== null || bedWarn !== null,
     })
   ) {
     state.holdY = handles.beacons[2 * aim.index + 1]!;
+    if (Number.isFinite(stickDepth)) stickDepth = state.holdY;
     input = { ...input, dive: false, rise: false };
   }
+  if (Number.isFinite(stickDepth) && !state.over) input = { ...input, orderY: stickDepth };
   const vertical = input.dive === input.rise ? 0 : input.dive ? -1 : 1;
   if (vertical !== 0 && vertical !== lastVertical) sound.launch(0.25);
   lastVertical = vertical;
@@ -613,6 +660,9 @@ function stepWorld(world: PhysicsWorld): void {
   steer(world, handles, input, state, water);
   driftInCurrent(world, handles, water);
   if (state.mode === 'diving' || state.mode === 'rising') heaveTiming.note(world.time, state.holdY);
+  // The stick's order reached (the boat level on it) or the boat afloat: the helm holds on alone.
+  const reached = Math.abs(c0.Position.y[hull]! - state.holdY) < 0.3 && Math.abs(c0.Velocity.y[hull]!) < 0.3;
+  if (byStick === 0 && (state.mode === 'surfaced' || reached)) stickDepth = Number.NaN;
   // Waves: the sea's surface bobs (the hull rides it).
   const sea = world.components.FluidRegion;
   sea.surface[handles.sea] = params.waveHeight * 0.5 * Math.sin(0.9 * world.time);
@@ -621,7 +671,7 @@ function stepWorld(world: PhysicsWorld): void {
   driveTiming.clock(world.time, performance.now());
   if (state.over) return;
   // The clock starts with the first control held, not when the page loads.
-  const anyHeld = input.dive || input.rise || input.noseDown || input.noseUp || input.ahead || input.astern;
+  const anyHeld = input.dive || input.rise || (input.nose ?? 0) !== 0 || input.ahead || input.astern;
   if (Number.isNaN(state.startedAt) && anyHeld) state.startedAt = world.time;
   const before = state.time;
   state.time = Number.isNaN(state.startedAt) ? 0 : world.time - state.startedAt;
@@ -649,6 +699,7 @@ function stepWorld(world: PhysicsWorld): void {
   if (contact !== '') {
     // The helm brakes and holds the depth it stops at, above the contact.
     state.holdY = Number.NaN;
+    stickDepth = Number.NaN;
     if (!wasTouching || contact === 'hit') {
       sound.impact(contact === 'hit' ? 20 : 6, 'metal');
       buzz(contact === 'hit' ? HIT_BUZZ_MS : SCRAPE_BUZZ_MS);
@@ -845,7 +896,7 @@ const game = await startPixiGame({
   controls: [
     { keys: '↓ ↑ / S W', action: 'dive / rise (let go: stop at the line)', touch: 'stick ↓ ↑' },
     { keys: '← → / A D', action: 'screw astern / ahead', touch: 'stick ← →' },
-    { keys: 'Q / E', action: 'nose down / up', touch: 'Nose ↘ / ↗' },
+    { keys: 'Q / E', action: 'tilt 5° a tap', touch: 'Nose ↘ / ↗' },
     { keys: 'mouse', action: 'press and drag on the sea: steer like a stick', touch: '' },
     { keys: '◯', action: 'beacon: touch its yellow ring with any part of the boat to collect it', touch: '◯' },
     { keys: '●', action: GLOW_LEGEND, touch: '●' },
@@ -1994,6 +2045,8 @@ function declutter(H: number, hull: readonly number[]): void {
     if (aim.badge[2]! > 0) take('badge', aim.badge);
   }
   if (gaugeDepth?.visible) take('depth', boxOf(gaugeDepth));
+  if (orderTag.visible && clear(boxOf(orderTag))) take('order', boxOf(orderTag));
+  else orderTag.visible = false;
   for (const [name, note] of [
     ['glow hint', glowNote],
     ['current note', currentNoteEl],
@@ -2071,7 +2124,13 @@ function drawEdgeMarks(W: number, H: number, k: number, cx: number, sy: (y: numb
     top = 14 + size,
     bottom = H - 14 - size;
   // Taken: the gauge's tags, the target's frame, the pointer's label and badge, then each mark placed.
-  const taken = [gauge_.depth, gauge_.target, aim.frame, ...(pointer.visible ? [aim.label, aim.badge] : [])].filter((b) => b[2]! > 0);
+  const taken = [
+    gauge_.depth,
+    gauge_.target,
+    aim.frame,
+    ...(pointer.visible ? [aim.label, aim.badge] : []),
+    ...(mineTag.visible ? [mineWarning.box] : []),
+  ].filter((b) => b[2]! > 0);
   for (const [n, m] of marks.entries()) {
     const text =
       edgeTexts[n] ??
@@ -2089,16 +2148,19 @@ function drawEdgeMarks(W: number, H: number, k: number, cx: number, sy: (y: numb
       icon = tip - heading * 22,
       w = text.width + 38,
       h = Math.max(24, text.height + 8);
-    let y = Math.max(top, Math.min(bottom, sy(m.y)));
+    const want = Math.max(top, Math.min(bottom, sy(m.y)));
     const boxAt = (yy: number) => [heading > 0 ? tip - w - 6 : tip, yy - h / 2, w + 6, h];
-    for (let tries = 0; tries < 6; tries++) {
-      const hit = taken.find((b) => overlaps(boxAt(y), b, 2));
-      if (!hit) break;
-      // Off it, downward if the mark's depth lies below the middle of what it met, else upward.
-      const down = y >= hit[1]! + hit[3]! / 2;
-      y = down ? hit[1]! + hit[3]! + h / 2 + 3 : hit[1]! - h / 2 - 3;
-      y = Math.max(top, Math.min(bottom, y));
+    // At its depth, or else just above or below one of the boxes taken, whichever clear place is
+    // nearest its depth; none clear (on a phone the pointer's label and the gauge's tags can fill the
+    // edge), it is not drawn: a chip over the target's words hid them (issue 34).
+    const places = [want, ...taken.flatMap((b) => [b[1]! - h / 2 - 3, b[1]! + b[3]! + h / 2 + 3])]
+      .filter((yy) => yy >= top && yy <= bottom && !taken.some((b) => overlaps(boxAt(yy), b, 2)))
+      .sort((a, b) => Math.abs(a - want) - Math.abs(b - want));
+    if (places.length === 0) {
+      text.visible = false;
+      continue;
     }
+    const y = places[0]!;
     const box = boxAt(y);
     taken.push(box);
     const red = m.kind === 'mine';
@@ -2232,6 +2294,9 @@ const LADDER_FADE = 0.4;
  * player sees how far it has gone and has to go. Fades in and out over LADDER_FADE s of game time
  * `t`; `sx` / `sy` map world x / y (m) to screen px, (hxw, hyw) is the hull's centre, m.
  */
+/** The depth the boat will level at, by the ladder's cyan bar ("level 18 m"): shown while it is over a metre off the boat. */
+const orderTag = gaugeText(compact ? 14 : 12);
+orderTag.style.fill = 0x7fe3ff;
 function drawDepthLadder(t: number, sx: (x: number) => number, sy: (y: number) => number, hxw: number, hyw: number): void {
   const c = shell.world.components,
     vy = c.Velocity.y[handles.hull]!;
@@ -2275,11 +2340,29 @@ function drawDepthLadder(t: number, sx: (x: number) => number, sy: (y: number) =
         mark.visible = true;
       }
     }
-    if (Number.isFinite(order) && Math.abs(order - hyw) > 0.3)
+    if (Number.isFinite(order) && Math.abs(order - hyw) > 0.3) {
       g.roundRect(px - 11, sy(order) - 2, 22, 4, 2)
         .fill({ color: 0x7fe3ff, alpha: ladder.alpha })
         .stroke({ color: 0x06213a, width: 1, alpha: ladder.alpha });
+      // Where the boat will level: a dashed cyan line at the order's depth along the hull's length,
+      // and its depth beside the ladder ("level 18 m"), so the mark the stick moves reads at a glance.
+      const oy = sy(order),
+        // (Inside the view: a hull put far off it would have the dashes run on for millions of px.)
+        bow = Math.min(app.screen.width, sx(hxw + SUBMARINE.length / 2));
+      for (let x0 = px + 12; x0 < bow; x0 += 10) g.moveTo(x0, oy).lineTo(Math.min(bow, x0 + 6), oy);
+      g.stroke({ color: 0x7fe3ff, width: 2, alpha: 0.8 * ladder.alpha });
+      if (Math.abs(order - hyw) > 1) {
+        orderTag.text = `level ${Math.max(0, -order).toFixed(0)} m`;
+        // Left of the ladder, or past the bow where that would run off the view's left edge.
+        const left = px - 14 - orderTag.width >= 4;
+        orderTag.anchor.set(left ? 1 : 0, 0.5);
+        orderTag.position.set(left ? px - 14 : bow + 6, oy);
+        orderTag.alpha = ladder.alpha;
+        orderTag.visible = true;
+      }
+    }
   }
+  if (!(ladder.alpha > 0 && Number.isFinite(order) && Math.abs(order - hyw) > 1)) orderTag.visible = false;
   for (let i = used; i < ladderMarks.length; i++) ladderMarks[i]!.visible = false;
 }
 let lastFill = [0, 0];
@@ -3175,9 +3258,12 @@ function draw(): void {
   // The speed is over the ground (the hull's own velocity); the water's, where it flows, beside it
   // ("current ◀2.4 m/s", as the current's note tells it), so a boat held back by the current is seen to be, not only felt.
   const water = currentMark(currentAt(params.level, c.Position.y[e]!));
+  // The nose trim (./helm.ts noseTrim) while set: which way and how far, so every Nose tap shows.
+  const nose = Math.round((trim * 180) / Math.PI);
+  const noseMark = nose === 0 ? '' : `${nose < 0 ? '↘' : '↗'}${Math.abs(nose)}°`;
   readoutText.textContent = compact
-    ? `${Math.max(0, depth).toFixed(0)}${ordered.replace(/ /g, '')} m ${speedMark(c.Velocity.x[e]!)}${water ? ` ${water.replace('current ', '≋')}` : ''}${stopped ? ' · seabed' : ''} · ${state.score} · `
-    : `${Math.max(0, depth).toFixed(0)}${ordered} m${stopped} · ${speedWords(c.Velocity.x[e]!)}${water ? ` over ground, ${water}` : ''} · ${state.score} pts${streak} · `;
+    ? `${Math.max(0, depth).toFixed(0)}${ordered.replace(/ /g, '')} m ${speedMark(c.Velocity.x[e]!)}${noseMark ? ` ${noseMark}` : ''}${water ? ` ${water.replace('current ', '≋')}` : ''}${stopped ? ' · seabed' : ''} · ${state.score} · `
+    : `${Math.max(0, depth).toFixed(0)}${ordered} m${stopped} · ${speedWords(c.Velocity.x[e]!)}${water ? ` over ground, ${water}` : ''}${noseMark ? ` · nose ${noseMark}` : ''} · ${state.score} pts${streak} · `;
   showHull();
   seabedLine.textContent = `seabed ${(-floor).toFixed(0)} m`;
   physicsText.textContent = [

@@ -48,3 +48,52 @@ export function stickShare(v: number, key: boolean): number {
   if (key) return 1;
   return Math.max(STICK_MIN_SHARE, Math.min(1, (Math.abs(v) - STICK_AXIS) / (1 - STICK_AXIS)));
 }
+
+/**
+ * How fast the stick at its rim moves the depth it orders, m/s (in proportion to `stickShare` below
+ * that): 8, faster than the boat at rest dives (5 m/s), so the order mark runs ahead of the boat
+ * (3 m more each second held) and shows where it will level off.
+ */
+export const STICK_ORDER_SPEED = 8;
+/**
+ * How far the stick's order may run ahead of the boat, m: 25, what a phone's view shows above and
+ * below the hull at rest, so the mark stays in sight by the boat.
+ */
+export const STICK_ORDER_LEAD = 25;
+
+/**
+ * The depth the stick orders (`HelmInput.orderY`): pushed down or up it moves at STICK_ORDER_SPEED
+ * times its share, from the boat's own depth order (or the hull), at most STICK_ORDER_LEAD m ahead of
+ * the hull and within [`floor`, `ceiling`] (m, heights: the lowest the helm may hold over the seabed
+ * and the surface); let go it stays, and the helm takes the boat to it and levels there. `order`:
+ * the order now (NaN: none yet), `dir`: -1 down, 1 up, 0 neither; `share`: in (0, 1]; `y`: the
+ * hull's height; `held`: the helm's depth order (NaN: none), m. Returns the new order, m.
+ * @throws RangeError when `dt`, `y`, `floor` or `ceiling` is not finite or `share` is not in [0, 1].
+ */
+export function stickOrder(
+  order: number,
+  dir: -1 | 0 | 1,
+  share: number,
+  dt: number,
+  y: number,
+  held: number,
+  floor: number,
+  ceiling: number,
+): number {
+  for (const [name, v] of [
+    ['dt', dt],
+    ['y', y],
+    ['floor', floor],
+    ['ceiling', ceiling],
+  ] as const)
+    if (!Number.isFinite(v)) throw new RangeError(`stickOrder: ${name} must be finite, got ${v}`);
+  if (!(share >= 0 && share <= 1)) throw new RangeError(`stickOrder: share must be in [0, 1], got ${share}`);
+  if (dir === 0) return order;
+  // From the order already set (the stick's, else the helm's), or half a metre past the hull (the
+  // helm's order lead, so the boat starts at once); never behind the hull the way it is pushed.
+  const from0 = Number.isFinite(order) ? order : Number.isFinite(held) ? held : y + dir * 0.5;
+  const from = dir < 0 ? Math.min(from0, y + dir * 0.5) : Math.max(from0, y + dir * 0.5);
+  const to = from + dir * STICK_ORDER_SPEED * share * dt;
+  const lead = dir < 0 ? Math.max(to, y - STICK_ORDER_LEAD) : Math.min(to, y + STICK_ORDER_LEAD);
+  return Math.min(ceiling, Math.max(floor, lead));
+}

@@ -8,12 +8,14 @@ import { createPhysicsWorld, step } from '@bitphysics/physics';
 import { SUBMARINE, SUBMARINE_NEUTRAL_FILL, seabedHeight, submarine } from '@bitphysics/projects';
 import { describe, expect, it } from 'vitest';
 import {
+  BACK_REACH,
   BEACON_CATCH,
   BEACON_PASSED,
   beaconLabel,
   beaconName,
   catchesBeacon,
   chooseBeacon,
+  courseSpeed,
   LABEL_LINE_MAX,
   LEG_MAX,
   LEG_MIN_SHARE,
@@ -151,15 +153,33 @@ describe('submarine beacon pointer', () => {
     const taken = [true, false, false, false, false, false];
     expect(chooseBeacon(beacons, taken, 280 + BEACON_PASSED + 5, -40, 2, -1, -2)).toBe(2);
     expect(chooseBeacon(beacons, taken, 280 + BEACON_PASSED + 5, -40, 2, -1, 3)).toBe(3);
-    // B skipped (the target is D, ahead); backing from 330 m towards B the target is C, the nearest
-    // beacon behind; C collected on the way, the target is B, not D ahead.
-    expect(chooseBeacon(beacons, taken, 330, -40, 3, -1, -3)).toBe(2);
+    // B skipped (the target is D, ahead); backing from 330 m towards B the target stays D until C,
+    // the nearest beacon behind, is within BACK_REACH (issue 34: braking with Astern swung the label
+    // round to a beacon skipped 50 m behind); then it is C; C collected on the way, the target is B, not D ahead.
+    expect(chooseBeacon(beacons, taken, 330, -40, 3, -1, -3)).toBe(3);
+    expect(chooseBeacon(beacons, taken, 280 + BACK_REACH + 1, -40, 3, -1, -3)).toBe(3);
+    expect(chooseBeacon(beacons, taken, 280 + BACK_REACH - 1, -40, 3, -1, -3)).toBe(2);
     expect(chooseBeacon(beacons, [true, false, true, false, false, false], 275, -30, 2, 2, -3)).toBe(1);
     // Going on ahead again, the skipped beacon far behind hands over to the first ahead.
     expect(chooseBeacon(beacons, [true, false, true, false, false, false], 260, -30, 1, -1, 3)).toBe(3);
     // Backing a little after braking short of the target (within TURNED_BACK of it): it stays.
     expect(chooseBeacon(beacons, taken, 400 - 20, -50, 3, -1, -2)).toBe(3);
-    expect(chooseBeacon(beacons, taken, 400 - TURNED_BACK - 5, -50, 3, -1, -2)).toBe(2);
+    // Backing on further, C 87 m behind is beyond BACK_REACH: the target is still D.
+    expect(chooseBeacon(beacons, taken, 400 - TURNED_BACK - 5, -50, 3, -1, -2)).toBe(3);
+  });
+
+  it('a current carrying the boat back does not turn the target round to a beacon skipped behind it (issue 34)', () => {
+    const beacons = [40, -20, 160, -40, 280, -30, 400, -50];
+    const taken = [true, false, false, false];
+    // B (160) skipped, C (280) the target 20 m ahead; the boat drifts back at 1.2 m/s with no Astern
+    // asked: it counts as stopped (0), and the target stays C however near B comes.
+    expect(courseSpeed(-1.2, false)).toBe(0);
+    expect(chooseBeacon(beacons, taken, 180, -40, 2, -1, courseSpeed(-1.2, false))).toBe(2);
+    // Astern asked: backing counts, ahead does not (the brake slowing a boat still going ahead).
+    expect(courseSpeed(-3, true)).toBe(-3);
+    expect(courseSpeed(4, true)).toBe(0);
+    expect(courseSpeed(4, false)).toBe(4);
+    expect(() => courseSpeed(Number.NaN, false)).toThrow(/courseSpeed: vx/);
   });
 
   it('reversing on the "skipped in 1 m" warning at full ahead keeps the target, and the boat backs onto it', () => {

@@ -22,6 +22,9 @@ import {
   KEY_HEAVE_SHARE_FAST,
   keyHeaveShare,
   NO_INPUT,
+  NOSE_RATE,
+  NOSE_STEP,
+  noseTrim,
   screwPush,
   steer,
   stopping,
@@ -413,6 +416,31 @@ describe('submarine helm', () => {
 });
 
 describe('submarine helm, the stick pushed part way', () => {
+  it('every Nose tap turns the boat 5 degrees more and it stays so; under way it follows its nose down; Dive levels it (issue 34)', () => {
+    // A stranger tapped Nose and saw nothing: a 0.1 s press held the nose only while pressed and
+    // turned the boat 1.1 degrees before it levelled. Now each press steps the trim (noseTrim) and
+    // the helm holds it. Tolerance: within 1 degree of the trim after 3 s (the pitch loop settles).
+    expect(noseTrim(0, -1, 0, 1 / 60)).toBeCloseTo(-NOSE_STEP, 12);
+    expect(noseTrim(-NOSE_STEP, -1, 0, 1 / 60)).toBeCloseTo(-2 * NOSE_STEP, 12);
+    expect(noseTrim(-2 * NOSE_STEP, -1, -1, 10)).toBe(-HELM.noseAngle);
+    // A tap the other way levels a trim of a step or less, never tilting past level.
+    expect(noseTrim(-0.5 * NOSE_STEP, 1, 0, 1 / 60)).toBe(0);
+    expect(noseTrim(0, 0, 1, 0.5)).toBeCloseTo(0.5 * NOSE_RATE, 12);
+    expect(() => noseTrim(Number.NaN, 0, 0, 0.1)).toThrow(/noseTrim: trim/);
+    const b = boat(-40);
+    const one = noseTrim(0, -1, 0, b.world.dt);
+    run(b, { nose: one }, 3);
+    expect(Math.abs(angle(b) - one) / DEG).toBeLessThan(1);
+    const two = noseTrim(one, -1, 0, b.world.dt);
+    run(b, { nose: two }, 3);
+    expect(Math.abs(angle(b) - two) / DEG).toBeLessThan(1);
+    // Under way at 10 degrees nose down the boat goes down (8 m/s x sin 10 deg = 1.4 m/s): over 3 m in 4 s.
+    const y0 = y(b);
+    run(b, { nose: two, ahead: true }, 4);
+    console.log(`two Nose taps: pitch ${(angle(b) / DEG).toFixed(1)} deg; 4 s ahead: ${(y0 - y(b)).toFixed(1)} m down`);
+    expect(y0 - y(b)).toBeGreaterThan(3);
+  });
+
   it('the stick pushed 45 degrees (ahead and down) makes 95 % of the speed ahead it asks for while it dives', () => {
     // Issue 34: a stranger's diagonal push dived but made 4.3 to 4.6 m/s ahead of the 5.24 asked:
     // the screw's governor held the speed along the bow-down hull (vx cos + vy sin), which the dive
