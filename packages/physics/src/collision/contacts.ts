@@ -210,6 +210,16 @@ export function growContactBuffer(buf: ContactBuffer, needed: number): void {
 }
 
 /**
+ * Contact rows a world of `balls` balls may need at most in its usual scenes: 4 a ball in 3D, 2.5 in 2D
+ * (settled piles measured about 3.8 and 2.3: spheres-in-box 5,000 and balls-in-box 20,000 after 200
+ * steps; close packing with walls reaches about 7 and 3.5, one doubling further).
+ * @category Collision
+ */
+export function contactRowsEstimate(balls: number, dimensions: number): number {
+  return Math.ceil(balls * (dimensions === 3 ? 4 : 2.5));
+}
+
+/**
  * Warm-start cache: the accumulated impulses of the previous step's contacts, found by
  * (kind, a, b, feature) in an open-addressing hash table (linear probing). Starting the solver from
  * last step's impulses is what lets a few iterations hold a deep pile still (Catto, "Iterative

@@ -1,5 +1,6 @@
 import { hasComponent } from 'bitecs';
 import type { PhysicsWorld } from '../world/options.js';
+import { MAX_MANIFOLDS } from './manifold-limits-2d.js';
 import { growManifoldBuffer, type ManifoldBuffer, pairHash, type ShapeCollisionState } from './manifolds-2d.js';
 
 /**
@@ -83,6 +84,11 @@ export function keepSleepingManifolds(world: PhysicsWorld): void {
   const m = st.previous, // this step's rows (finishManifolds made them the cache)
     d = st.dormant;
   const before = d.count;
+  // Room for every row kept first (a pyramid falling asleep keeps a thousand at once), rather than
+  // doubling the dormant buffer row by row.
+  let kept = 0;
+  for (let i = 0, n = m.count; i < n; i++) if (m.touching[i] === 1 && still(world, m.bodyA[i]!) && still(world, m.bodyB[i]!)) kept++;
+  if (kept > 0) growManifoldBuffer(d, Math.min(d.count + kept, MAX_MANIFOLDS));
   for (let i = 0, n = m.count; i < n; i++) {
     if (m.touching[i] !== 1 || !still(world, m.bodyA[i]!) || !still(world, m.bodyB[i]!)) continue;
     // A pair is in a step's rows once: the rows appended here need no hash until the loop ends.

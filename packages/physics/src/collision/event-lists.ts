@@ -121,15 +121,21 @@ export function reserveEvent(list: ContactEventList): void {
   if (list.count >= list.shapeA.length) growEvents(list);
 }
 
+/** Rows a list grows to at least when it first overflows. */
+const FIRST_GROWTH_ROWS = 1024;
+
 /**
- * Doubles every column of `list`, keeping its rows. Out of line from reserveEvent: V8 inlines
+ * Doubles every column of `list` (to at least FIRST_GROWTH_ROWS rows), keeping its rows. Out of line from reserveEvent: V8 inlines
  * reserveEvent wherever an event is written (the touch loops of a world's first step), and this loop
  * of allocations and keyed copies inlined with it made those loops costlier to compile.
  */
 function growEvents(list: ContactEventList): void {
   const rec = list as unknown as Record<string, Float64Array>;
+  // A step that overflows the first 16 rows is usually a pile landing, whose events run to thousands
+  // over the next steps: jump to 1024 rows (98 KB a list) rather than doubling through 32..512.
+  const rows = Math.max(2 * list.shapeA.length, FIRST_GROWTH_ROWS);
   for (const k of EVENT_FIELDS) {
-    const next = new Float64Array(rec[k]!.length * 2);
+    const next = new Float64Array(rows);
     next.set(rec[k]!);
     rec[k] = next;
   }

@@ -15,6 +15,9 @@ function hashCell(cx: number, cy: number): number {
   return (Math.imul(cx, 73856093) ^ Math.imul(cy, 19349663)) >>> 0;
 }
 
+/** Candidate pairs a collider findPairs makes room for before its search (8 bytes each). */
+const PAIRS_PER_COLLIDER = 6;
+
 /** Half neighbourhood of the lower-corner grid (see the module comment of collision/shapes-2d.ts). */
 const HALF = [1, 0, 1, 1, 0, 1, -1, 1];
 
@@ -27,6 +30,9 @@ export function findPairs(sc: ShapeScratch, anyMoving: boolean): void {
   const n = sc.count;
   sc.pairCount = 0;
   if (n < 2 || !anyMoving) return;
+  // Room for PAIRS_PER_COLLIDER pairs a collider up front (a pile of boxes finds about 5 to 10), so a
+  // scene's first search doubles the pair arrays once at most rather than from 1,024 up.
+  if (sc.pairI.length < PAIRS_PER_COLLIDER * n) growPairs(sc, PAIRS_PER_COLLIDER * n);
   const fl = sc.flags;
   const minX = sc.minX,
     minY = sc.minY,

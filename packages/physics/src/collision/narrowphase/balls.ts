@@ -1,7 +1,7 @@
 import type { PhysicsWorld } from '../../world/options.js';
 import { query } from '../../world/query.js';
 import { BodyType, PairKind } from '../broadphase/grid.js';
-import { type ContactBuffer, ContactKind, growContactBuffer } from '../contacts.js';
+import { type ContactBuffer, ContactKind, contactRowsEstimate, growContactBuffer } from '../contacts.js';
 import { ballContactsStage } from './balls-threads.js';
 
 function pushContact(buf: ContactBuffer, kind: number, a: number, b: number, feature: number): void {
@@ -147,6 +147,17 @@ export function narrowphaseSystem(world: PhysicsWorld): void {
   const cs = world.collision;
   const buf = cs.contacts;
   buf.count = 0;
+  // Once this step's pairs (ballContactsStage makes room for a row each) or twice the last step's rows
+  // pass this buffer, grow it in one go to what the world's balls may need (a pile's contacts, reached
+  // over the steps after the balls land) rather than by doubling step after step through the first
+  // steps: each growth allocates every column. The buffer is empty here, so nothing is copied. Past
+  // the estimate, ballContactsStage and pushContact double it as before.
+  const need = Math.max(2 * cs.cache.rows.count, cs.pairCount);
+  if (need > buf.capacity) {
+    const balls = query(world, [world.components.Position, world.components.Ball]).length;
+    const estimate = contactRowsEstimate(balls, world.dimensions);
+    if (buf.capacity < estimate) growContactBuffer(buf, Math.max(need, estimate));
+  }
   const pairA = cs.pairA,
     pairB = cs.pairB,
     pairKind = cs.pairKind;
