@@ -1174,9 +1174,10 @@ function typing(target: EventTarget | null): boolean {
 window.addEventListener('keydown', (event) => {
   const k = event.key.toLowerCase();
   if (!TORQUE_KEYS.includes(k) || typing(event.target) || event.ctrlKey || event.metaKey || event.altKey) return;
-  // A press while the game is paused is dropped, not kept to act on resume (a stranger's paused
-  // presses rolled the cube the moment play went on).
-  if (shell.paused) {
+  // In the room a press while the game is paused is dropped, not kept to act on resume (a stranger's
+  // paused presses rolled the cube the moment play went on). On the pivot a key held while paused
+  // still turns the box under single steps (N), frame by frame.
+  if (shell.paused && params.mode === 'room') {
     event.preventDefault();
     return;
   }
@@ -1508,8 +1509,8 @@ canvas.addEventListener('pointerup', (event) => {
   if (event.pointerId !== downId) return;
   downId = -1;
   if (app.controls) app.controls.enabled = true;
-  // A tap or click while paused pushes nothing (it would act on resume).
-  if (shell.paused) return;
+  // A tap or click in the room while paused pushes nothing (it would act on resume).
+  if (shell.paused && params.mode === 'room') return;
   const moved = Math.hypot(event.clientX - downX, event.clientY - downY);
   if (event.pointerType !== 'mouse' && params.mode === 'room') {
     const does = touchPress(downOnCube, moved);
