@@ -101,6 +101,7 @@ import {
   throttleStep,
 } from './assist';
 import { createAttitudeIndicator } from './attitude-indicator';
+import { CHASE_LOOK, CHASE_OFFSET } from './chase-view';
 import { courseTipText, LESSON_RINGS, markerBearing } from './coach';
 import { createCockpit } from './cockpit';
 import {
@@ -1957,19 +1958,6 @@ let lastFrame = 0;
 let chaseDistance = 0;
 /** Time constant of the chase camera's swing round behind the aircraft, s. */
 const CHASE_LAG = 0.25;
-/**
- * Where the chase camera sits in the aircraft's frame, m: behind, above. Far enough that the 30 m
- * wing spans about a third of a landscape view (at 30 m behind, 9 up it would fill the lower middle
- * and hide the rings below the nose), and 17 degrees above the aircraft's axis so it sits low.
- */
-const CHASE_OFFSET = [-58, 18] as const;
-/**
- * The point the chase camera looks at in the aircraft's frame, m (ahead, above): the view's axis
- * 1.7 degrees below the aircraft's, so the path ahead (the next ring) is near the middle of the scene
- * and the aircraft in its lower third (16 degrees under the middle, 0.45 of the half height at the
- * 64 degree field of view).
- */
-const CHASE_LOOK = [42, 15] as const;
 /**
  * How much farther the chase camera sits on a screen narrower than 1.2 (a phone held upright: its
  * narrow view was half filled by the wings): the offset and the look point times 1.2 / aspect, so

@@ -17,6 +17,8 @@
  */
 
 import {
+  COMPACT_MAX_HEIGHT,
+  COMPACT_MAX_WIDTH,
   choiceParam,
   createActionButton,
   createPanel,
@@ -26,12 +28,13 @@ import {
   pageLayout,
   pointerOnCanvas,
 } from '@bitphysics/game-kit';
-import { createLabDock, createReadout, createStatusLine, followView, readUrlParams } from '@bitphysics/game-kit/lab-kit';
+import { createLabDock, createReadout, createStatusLine, readUrlParams } from '@bitphysics/game-kit/lab-kit';
 import { startPixiGame } from '@bitphysics/game-kit/pixi';
 import { createPlot } from '@bitphysics/game-kit/plot';
 import { addMouseJoint, isAlive, type PhysicsWorld, step as physicsStep, removeJoint, setMouseTarget, slotOf } from '@bitphysics/physics';
 import type { WorldRect } from '@bitphysics/render-pixi';
 import { Container, Graphics, Text } from 'pixi.js';
+import { clearFit, type PixelRect } from './clear-fit';
 import { cutRopes, findCuts, segmentDistance } from './cut';
 import {
   BALL_DRAG,
@@ -229,7 +232,31 @@ const started = await startPixiGame({
 });
 const { shell, renderer, app } = started;
 const dock = createLabDock();
-const refit = followView(app, renderer.camera, dock, () => scene.level.view as WorldRect);
+/**
+ * The open drawer's box on the canvas, CSS px (the settings or the menu lying over the scene), or
+ * null when none is open.
+ */
+function drawerCover(): PixelRect | null {
+  const page = pageLayout();
+  const open = page.root.dataset.open;
+  const el = open === 'side' ? page.side : open === 'info' ? page.info : null;
+  if (!el) return null;
+  const c = app.canvas.getBoundingClientRect(),
+    d = el.getBoundingClientRect();
+  return { left: d.left - c.left, top: d.top - c.top, right: d.right - c.left, bottom: d.bottom - c.top };
+}
+/**
+ * Frames the level in the part of the canvas the open drawer leaves free (clear-fit.ts): the stars
+ * and the basket never lie under the settings. Called at a level's start, on a resize and when a
+ * drawer opens or closes.
+ */
+function refit(): void {
+  const cam = renderer.camera;
+  cam.fit(clearFit(scene.level.view as WorldRect, cam.width, cam.height, drawerCover()), 0);
+}
+app.renderer.on('resize', refit);
+refit();
+new MutationObserver(refit).observe(pageLayout().root, { attributes: true, attributeFilter: ['data-open'] });
 
 /**
  * Goes to the next level (after the last, back to the first) once this one is cleared: won now or
@@ -318,6 +345,14 @@ function showReadout(world: PhysicsWorld): void {
   readout.set(1, `${game.stars()} of 3`);
   readout.set(2, String(cuts));
   if (debug) readout.set(3, `${(world.joints.stats.maxError * 1000).toPrecision(3)} mm`);
+}
+// On a small screen the settings drawer lies over the scene's top: without the chart it ends about
+// half way down, leaving the level room to be framed below it (clearFit); with it, a fifth.
+{
+  const style = document.createElement('style');
+  style.textContent = `@media (max-width: ${COMPACT_MAX_WIDTH - 0.02}px), (max-height: ${COMPACT_MAX_HEIGHT - 0.02}px) { .rope-charts { display: none !important; } }`;
+  document.head.append(style);
+  dock.charts.classList.add('rope-charts');
 }
 plot = createPlot({
   parent: dock.charts,

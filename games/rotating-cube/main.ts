@@ -100,6 +100,7 @@ import { buildRoomLook } from './room-look';
 import { type RoundEndContent, roundEnd, starText } from './round-end';
 import { padResultText, roundMovesText } from './round-moves';
 import {
+  BUMP_SPIN,
   buildRotatingCube,
   CELL_REACH,
   cubeStill,
@@ -131,6 +132,7 @@ import {
   ROOM_HALF,
   ROOM_PUSH,
   type RotatingCubeHandles,
+  rollBlocked,
   rollSettle,
   rollStart,
   rotatingCubeWorldOptions,
@@ -1172,6 +1174,13 @@ function typing(target: EventTarget | null): boolean {
 window.addEventListener('keydown', (event) => {
   const k = event.key.toLowerCase();
   if (!TORQUE_KEYS.includes(k) || typing(event.target) || event.ctrlKey || event.metaKey || event.altKey) return;
+  // In the room a press while the game is paused is dropped, not kept to act on resume (a stranger's
+  // paused presses rolled the cube the moment play went on). On the pivot a key held while paused
+  // still turns the box under single steps (N), frame by frame.
+  if (shell.paused && params.mode === 'room') {
+    event.preventDefault();
+    return;
+  }
   // The round's clock starts with the player's first move; a roll or spin leaves the last aim stale.
   startClock();
   clearAim();
@@ -1333,6 +1342,25 @@ function snapToEdge(ax: number, az: number): void {
 }
 
 /**
+ * Room mode, on a roll key's press with rollAxis set: when a wall blocks that roll (scene.ts
+ * `rollBlocked`), the resting cube only bumps towards the wall and falls back (`BUMP_SPIN`), no
+ * torque and no latch, so the face on top stays and no move is counted; a pop says so.
+ * @returns whether the roll was blocked (then rollAxis is cleared).
+ */
+function bumpWall(): boolean {
+  const P = shell.world.components.Position,
+    e = handles.body;
+  // The travel d = axis x y = (-az, 0, ax).
+  if (!rollBlocked(P.x[e]!, P.z[e]!, -rollAxis[2]!, rollAxis[0]!)) return false;
+  rollStart(shell.world, e, rollAxis[0]!, rollAxis[2]!, BUMP_SPIN);
+  rollAxis.fill(0);
+  latchUntil = -1;
+  settleArmed = true;
+  showPop('Wall: no roll, no move', 1200, '#ffd7a8');
+  return true;
+}
+
+/**
  * Room mode, after rollAxis is set from the roll keys pressed this frame: on a new roll key press (`fresh`) latches the
  * level part of rollAxis and sets a cube at rest turning over its edge (scene.ts `rollStart`); on the frames after the press (`rolling` false) while the latch is on, rolls on
  * about the latched axis until the cube has turned ROLL_LATCH_ANGLE since the press or
@@ -1432,6 +1460,7 @@ function updateKeyTorque(): void {
     rollAxis[1] = ay;
     rollAxis[2] = az;
     keyTorque.fill(0);
+    if (newRoll && (pitch !== 0 || yaw !== 0) && bumpWall()) return;
     latchRoll(newRoll, pitch !== 0 || yaw !== 0);
     return;
   }
@@ -1480,6 +1509,8 @@ canvas.addEventListener('pointerup', (event) => {
   if (event.pointerId !== downId) return;
   downId = -1;
   if (app.controls) app.controls.enabled = true;
+  // A tap or click in the room while paused pushes nothing (it would act on resume).
+  if (shell.paused && params.mode === 'room') return;
   const moved = Math.hypot(event.clientX - downX, event.clientY - downY);
   if (event.pointerType !== 'mouse' && params.mode === 'room') {
     const does = touchPress(downOnCube, moved);

@@ -117,6 +117,25 @@ export function rollStart(world: PhysicsWorld, body: number, ax: number, az: num
 }
 
 /**
+ * Room mode: the spin, rad/s, a roll key's press gives a resting cube whose roll a wall blocks
+ * (`rollBlocked`): it tips about 6.5 degrees towards the wall and falls back onto the same face (a
+ * bump the player sees), short of the 30 degrees at which its top edge would reach the wall. The
+ * roll's torque, held on against a wall, turned the cube over in place onto another face instead.
+ */
+export const BUMP_SPIN = 1.3;
+
+/**
+ * Room mode: whether a roll of the cube resting with its centre at (`x`, `z`) m, over its bottom edge
+ * towards the level travel (`dx`, `dz`) (a unit vector), is blocked by a wall: the cell it would land
+ * on (its centre 1 m along) lies past the room's inside half width less the cube's half edge, with
+ * 0.1 m of slack (a cube that would graze the wall by less is nudged back by it and rolls fine).
+ */
+export function rollBlocked(x: number, z: number, dx: number, dz: number): boolean {
+  const most = ROOM_HALF - 0.5 + 0.1;
+  return Math.abs(x + dx) > most || Math.abs(z + dz) > most;
+}
+
+/**
  * Room mode: the speed, m/s, that a cube sliding on a face across the room's floor needs to stop after
  * `distance` m: sqrt(2 ROOM_FRICTION g d) (uniform deceleration by kinetic friction), at most PUSH_SPEED_MAX.
  * @param distance the slide, m, >= 0.
