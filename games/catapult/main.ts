@@ -332,14 +332,16 @@ const downShare = (): number => {
   return c.of === 0 ? 1 : c.down / c.of;
 };
 /**
- * What "down" means, as the player is told: the rule of scene.ts hasFallen (a drop of DROP_SHARE of a
- * piece's height, a lean past TIP_ANGLE, a knock of KNOCK_DISTANCE) and countsTowardStars, in words;
- * a piece down turns darker.
+ * What "down" means, as the player is told, in one short line: the rule of scene.ts hasFallen (a
+ * drop of DROP_SHARE of a piece's height, a lean past TIP_ANGLE, a knock of KNOCK_DISTANCE) and
+ * countsTowardStars in brief; a piece that counts turns darker, which tells the rest (a flat bottom
+ * row, a small knock) as the player plays. The long form named every case and took two lines of the
+ * banner and four of a phone's help.
  */
-const DOWN_RULE = 'Down: fallen, leaning 30° or knocked aside (it darkens); a flat bottom row does not count';
-const DOWN_RULE_SHORT = 'Down: fallen, leaning 30° or knocked aside (darkens); not a flat bottom row';
-/** The same rule in the controls' help (after a "Stars" cap): what the stars count. */
-const DOWN_HELP = 'count pieces down (they darken): fallen, leaning 30° or knocked aside; not a flat bottom row';
+const DOWN_RULE = 'Down: fallen, leaning 30° or knocked aside (it darkens)';
+const DOWN_RULE_SHORT = 'Down: fallen or leaning 30° (darkens)';
+/** The same rule in the controls' help (after a "Stars" cap): what the stars count, one line on a phone. */
+const DOWN_HELP = 'pieces down: fallen or leaning 30°';
 /**
  * The banner's type size on an upright phone, px: with the short rules a level's start is two lines
  * on a 390 px phone.
