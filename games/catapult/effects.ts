@@ -62,6 +62,12 @@ const POPUP_LIFE = 1.1,
   POPUP_RISE = 1.4;
 /** A popup takes in the points of another near it while under this share of its life (before it fades). */
 const MERGE_AGE = 0.6;
+/**
+ * A popup's type size, px on the screen (the stage is drawn 1:1 in CSS px): its digits, about 0.7 em,
+ * stand some 17 px tall at both a desktop and a phone size (at 18 px they were 6 to 13 px tall and
+ * hard to read over the scene). Two popups one line (`near` / 2, 40 px in main.ts) apart still clear.
+ */
+export const POPUP_FONT = 24;
 /** The share of POPUP_RISE a popup has risen at `t` of its life (0 to 1): fast, then slowing. */
 const rise = (t: number): number => 1 - (1 - t) * (1 - t);
 
@@ -169,10 +175,10 @@ export class Effects {
         text: '',
         style: {
           fill: 0xffffff,
-          fontSize: 18,
+          fontSize: POPUP_FONT,
           fontFamily: 'sans-serif',
           fontWeight: 'bold',
-          stroke: { color: 0x000000, width: 4, join: 'round' },
+          stroke: { color: 0x000000, width: 5, join: 'round' },
         },
       });
     text.anchor.set(0.5);

@@ -332,14 +332,16 @@ const downShare = (): number => {
   return c.of === 0 ? 1 : c.down / c.of;
 };
 /**
- * What "down" means, as the player is told: the rule of scene.ts hasFallen (a drop of DROP_SHARE of a
- * piece's height, a lean past TIP_ANGLE, a knock of KNOCK_DISTANCE) and countsTowardStars, in words;
- * a piece down turns darker.
+ * What "down" means, as the player is told, in one short line: the rule of scene.ts hasFallen (a
+ * drop of DROP_SHARE of a piece's height, a lean past TIP_ANGLE, a knock of KNOCK_DISTANCE) and
+ * countsTowardStars in brief; a piece that counts turns darker, which tells the rest (a flat bottom
+ * row, a small knock) as the player plays. The long form named every case and took two lines of the
+ * banner and four of a phone's help.
  */
-const DOWN_RULE = 'Down: fallen, leaning 30° or knocked aside (it darkens); a flat bottom row does not count';
-const DOWN_RULE_SHORT = 'Down: fallen, leaning 30° or knocked aside (darkens); not a flat bottom row';
-/** The same rule in the controls' help (after a "Stars" cap): what the stars count. */
-const DOWN_HELP = 'count pieces down (they darken): fallen, leaning 30° or knocked aside; not a flat bottom row';
+const DOWN_RULE = 'Down: fallen, leaning 30° or knocked aside (it darkens)';
+const DOWN_RULE_SHORT = 'Down: fallen or leaning 30° (darkens)';
+/** The same rule in the controls' help (after a "Stars" cap): what the stars count, one line on a phone. */
+const DOWN_HELP = 'pieces down: fallen or leaning 30°';
 /**
  * The banner's type size on an upright phone, px: with the short rules a level's start is two lines
  * on a 390 px phone.
@@ -2132,13 +2134,64 @@ function levelOver(world: PhysicsWorld, t: Tally): boolean {
  */
 const SHOT_BONUS = 150;
 
-/** Pebbles in the earth under the ground: x, y and radius, m (fixed, from a seeded generator). */
+/**
+ * Pebbles and buried stones in the earth under the ground: x, y and radius, m (fixed, from a seeded
+ * generator): small near the grass, up to half a metre deeper down, so the earth a phone shows under
+ * the scene (about 40 % of its height) reads as ground, not a plain brown panel.
+ */
 const PEBBLES: number[] = (() => {
   const r = new Rng(11);
   const out: number[] = [];
-  for (let i = 0; i < 90; i++) out.push(r.range(-12, 40), r.range(-14, -1.3), r.range(0.08, 0.22));
+  for (let i = 0; i < 240; i++) {
+    const y = r.range(-16, -1.3);
+    out.push(r.range(-12, 40), y, r.range(0.08, 0.22 + 0.02 * Math.min(14, -y)));
+  }
   return out;
 })();
+/** Roots under the grass: x, m, length, m, and lean (fixed, seeded). */
+const ROOTS: number[] = (() => {
+  const r = new Rng(5);
+  const out: number[] = [];
+  for (let i = 0; i < 70; i++) out.push(r.range(-12, 40), r.range(0.2, 0.45), r.range(-0.4, 0.4));
+  return out;
+})();
+/**
+ * Draws the earth's layers under the ground slab, `span` px wide: strata with wavy tops, darker with
+ * depth, roots under the grass, and pebbles and stones with a lit top.
+ */
+function drawEarth(span: number): void {
+  const cam = renderer.camera,
+    sx = (x: number) => cam.toScreenX(x),
+    sy = (y: number) => cam.toScreenY(y);
+  for (let k = 1; k <= 4; k++) {
+    const base = -1 - 1.5 * k;
+    if (sy(base + 0.3) >= cam.height) break;
+    const pts: number[] = [0, cam.height];
+    for (let px = 0; px <= span + 40; px += 40) {
+      const x = cam.toWorldX(px);
+      pts.push(px, sy(base + 0.25 * Math.sin(0.7 * x + 1.9 * k) + 0.12 * Math.sin(2.3 * x + k)));
+    }
+    pts.push(span + 40, cam.height);
+    overlay.poly(pts).fill({ color: 0x2a1a0c, alpha: 0.13 });
+  }
+  for (let i = 0; i < ROOTS.length; i += 3) {
+    const x = ROOTS[i]!,
+      len = ROOTS[i + 1]!,
+      lean = ROOTS[i + 2]!;
+    overlay
+      .moveTo(sx(x), sy(-1))
+      .quadraticCurveTo(sx(x + lean * 0.2), sy(-1 - len * 0.6), sx(x + lean * len), sy(-1 - len))
+      .stroke({ width: Math.max(1, cam.toScreenLength(0.035)), color: 0x3b2714, alpha: 0.6 });
+  }
+  for (let i = 0; i < PEBBLES.length; i += 3) {
+    const x = sx(PEBBLES[i]!),
+      y = sy(PEBBLES[i + 1]!),
+      r = cam.toScreenLength(PEBBLES[i + 2]!);
+    if (y - r > cam.height || x + r < 0 || x - r > span) continue;
+    overlay.ellipse(x, y, r, 0.6 * r).fill({ color: 0x9a8468, alpha: 0.55 });
+    if (r > 4) overlay.ellipse(x - 0.2 * r, y - 0.22 * r, 0.55 * r, 0.25 * r).fill({ color: 0xc8b594, alpha: 0.45 });
+  }
+}
 
 /** The rock's outline around its box, in units of its half extents (x, y pairs from the bottom left). */
 const ROCK_OUTLINE = [-1.25, -1, -1.15, 0.6, -1.0, 1.1, -0.3, 1.25, 0.5, 1.2, 1.1, 1.05, 1.25, 0.3, 1.3, -1];
@@ -2207,19 +2260,8 @@ function draw(world: PhysicsWorld, alpha: number): void {
   // rock: a phone's castle inset (drawCloseUp) draws the castle from off the screen.
   const span = Math.max(cam.width, sx(rockRight() + 2));
   overlay.rect(0, sy(-1), span, Math.max(0, cam.height - sy(-1))).fill(EARTH);
-  // Strata, darker with depth, and pebbles: earth, not a flat brown panel.
-  for (let k = 1; k <= 3; k++) {
-    const top = sy(-1 - 1.6 * k);
-    if (top < cam.height) overlay.rect(0, top, span, cam.height - top).fill({ color: 0x2a1a0c, alpha: 0.14 });
-  }
-  for (let i = 0; i < PEBBLES.length; i += 3) {
-    const x = sx(PEBBLES[i]!),
-      y = sy(PEBBLES[i + 1]!);
-    if (y < cam.height + 10)
-      overlay
-        .ellipse(x, y, cam.toScreenLength(PEBBLES[i + 2]!), cam.toScreenLength(0.6 * PEBBLES[i + 2]!))
-        .fill({ color: 0x9a8468, alpha: 0.55 });
-  }
+  // Strata, roots and stones: earth, not a flat brown panel.
+  drawEarth(span);
   drawRock();
   // The grass's top edge, lit, over the ground slab.
   overlay.rect(0, sy(0) - 1, span, Math.max(2, cam.toScreenLength(0.12))).fill(0x76b852);
