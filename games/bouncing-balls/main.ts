@@ -3507,7 +3507,7 @@ function drawEndCard(over: boolean): void {
       // The result first (against the best), then what made it, then a tip; Play again is under the card.
       lines: [
         bestLine,
-        `${plural(round.score, 'basket', 'baskets')} from ${plural(round.shots, 'throw', 'throws')}`,
+        `${plural(round.score, 'basket', 'baskets')} from ${plural(round.allShots, 'throw', 'throws')}`,
         `Longest streak ${round.bestStreak}`,
         ...bonus,
         tip,
