@@ -2460,12 +2460,15 @@ describe('bouncing balls: cancelling, full-power pulls and the end of a round mi
     type CutGame = AimGame & {
       spawn(x: number, y: number): number;
       aimCut(): { kind: string; x: number; y: number; words: string } | null;
+      aimHelp(on?: boolean): boolean;
     };
     await g.page.evaluate(() => {
       const game = window.game as unknown as CutGame;
       game.paused = true;
       for (const id of game.ballIds()) game.remove(id);
       game.spawn(8, 4);
+      // The arc's verdict past its first part is help (preview.ts: shown after 3 misses in a row).
+      game.aimHelp(true);
     });
     const at = await g.page.evaluate(() => (window.game as unknown as CutGame).positions());
     const from = await g.worldToPage(at[0]!, at[1]!);
