@@ -329,6 +329,8 @@ export interface HoopRound {
   upcoming: number[];
   /** Balls the player threw this round: in the warm-up all of them; from the first basket on, that basket's throw and those after it. */
   shots: number;
+  /** Every ball the player threw this round, the warm-up's too (the end card's "from N throws"). */
+  allShots: number;
 }
 
 /**
@@ -359,6 +361,7 @@ export function createRound(seconds = ROUND_SECONDS, spot = 0, perHoop = BASKETS
     lastMoved: false,
     upcoming: [],
     shots: 0,
+    allShots: 0,
   };
 }
 
@@ -395,6 +398,7 @@ export function nextSpot(round: HoopRound, spotCount: number, random?: () => num
 export function roundShot(round: HoopRound): void {
   if (round.phase === 'over') return;
   round.shots++;
+  round.allShots++;
 }
 
 /**

@@ -48,8 +48,10 @@
  * a pile does not roar. When time is up, the Play-again button floats over the stand under the box's
  * floor, clear of the ramps at its top. Until a press, a ring pulses round a ball to throw
  * (markThrowable; "drag me" over it until the round's first throw). A pull close to one that throws
- * through the middle of the hoop is drawn to it (currentThrow, aim-assist.ts); a throw that goes in
- * shows its arc on into the net, green, the rim ringed green and "on target" by the gauge (throwScores).
+ * through the middle of the hoop is drawn to it (currentThrow, aim-assist.ts). The aiming arc shows only
+ * the first part of the flight and no verdict (preview.ts shortArc); after 3 misses in a row (aimHelp)
+ * it shows the whole flight as help until the next basket: a throw that goes in then shows its arc on
+ * into the net, green, the rim ringed green and "on target" by the gauge (throwScores).
  *
  * Looks: a court (a wall with panels over a wooden floor, the box framed in steel), wooden ramps,
  * plain coloured balls (no rotation marks, no trails unless asked for), a plain white backboard,
@@ -140,6 +142,7 @@ import {
 } from './hoop';
 import { createKnockLimiter, KNOCK_LIMITS } from './knocks';
 import { drawFloor, drawGlint, drawShadow, drawWall, shadeBallTexture } from './looks';
+import { aimHelp, shortArc } from './preview';
 import { pressInBox, ringInside } from './pull-fit';
 import {
   applyDrag,
@@ -278,6 +281,10 @@ let missAt = -1e9;
 const MISS_SHOWN = 2.5;
 /** What the status row says of the last miss (hoop.ts missWords), or of a flick too slow to throw (release). */
 let missSaid = 'Missed';
+/** The player's misses in a row (across rounds; a basket ends them): from AIM_HELP_MISSES on the aiming arc shows its whole flight and verdict (preview.ts aimHelp). */
+let missesInARow = 0;
+/** Whether the aiming arc always shows its whole flight and verdict (the test hook aimHelp; preview.ts). */
+let aimHelpAlways = false;
 
 /** Builds a fresh world with the scene from the current params (the shell calls it at start and on R). */
 function createWorld(): PhysicsWorld {
@@ -756,6 +763,7 @@ function playHoop(world: PhysicsWorld): void {
       };
       flights.delete(e);
       basketballs.delete(e);
+      missesInARow = 0;
       const sunk = world.components.Ball.radius[slotOf(e)]!;
       removeBall(world, handles, e);
       feedHeap(world, opening, sunk);
@@ -778,6 +786,7 @@ function playHoop(world: PhysicsWorld): void {
       if (round.phase === 'over') continue;
       if (b.scores) {
         const broke = roundMiss(round);
+        missesInARow++;
         // Every miss is said, with why (a throw off the ceiling back onto the heap looked like none).
         missAt = playSeconds;
         missSaid = missWords(broke, b.top, layoutOf(TALL).box.max[1] - world.components.Ball.radius[slotOf(e)]!, spots[hoopAt]!);
@@ -2339,9 +2348,11 @@ function showHoldLabel(text: string, x: number, y: number): void {
   holdLabel.visible = true;
 }
 
-/** Puts `label` (anchored at its bottom centre) centred at x, its bottom at y (CSS px on the canvas), moved to lie inside the canvas. */
+/** How far from the canvas' sides placeInside keeps a label, CSS px: clear of a phone's rounded corners and its edge swipe (4 px read as cut off). */
+const LABEL_EDGE_PX = 12;
+/** Puts `label` (anchored at its bottom centre) centred at x, its bottom at y (CSS px on the canvas), moved to lie LABEL_EDGE_PX inside the canvas' sides (centred when wider than that leaves). */
 function placeInside(label: Text, x: number, y: number): void {
-  const half = label.width / 2 + 4;
+  const half = label.width / 2 + LABEL_EDGE_PX;
   const w = app.screen.width;
   label.position.set(half * 2 >= w ? w / 2 : Math.min(w - half, Math.max(half, x)), Math.max(label.height + 2, y));
 }
@@ -2547,12 +2558,16 @@ function drawPointer(): void {
     }
     overlay.stroke({ width: 4, color: powerColor(power), alpha: 0.95 });
   }
-  const path = aimPath();
+  // Without help (preview.ts aimHelp: after 3 misses in a row) the dots show only the first part of
+  // the flight (shortArc) and no verdict: no green, no "on target", no cut past the shown part.
+  const help = aimHelp(missesInARow, aimHelpAlways);
+  const full = aimPath();
+  const path = help ? full : shortArc(full, hoopSpots(TALL)[hoopAt]!.x);
   const n = path.length / 2;
   // The dots shrink and fade out along the arc (it ends short of the rim's height: arcSeconds); green
   // when the throw goes in (throwScores: drawn to a basket by the aim assist, or as pulled), as the
   // label's "on target", and the rim glows green under the arc's end in the net.
-  const onTarget = throwScores(t);
+  const onTarget = help && throwScores(t);
   const dotColor = onTarget ? ON_TARGET_COLOR : thrownColor;
   if (onTarget) {
     const spot = hoopSpots(TALL)[hoopAt]!;
@@ -2591,7 +2606,9 @@ function drawPointer(): void {
   overlay.stroke({ width: 4, color: powerColor(power), alpha: 0.95 });
   // The arc cut short by a ball, a ramp or the hoop: a red cross where it ends (over the thrown
   // ball's disc when a ball blocks it at once) and what it hits beside it.
-  const cut = arcCut(t, path, pressBall);
+  // Without help only a cut the short arc reaches is shown, or a ball in the way at once (blocked).
+  const fullCut = arcCut(t, full, pressBall);
+  const cut = fullCut !== null && (help || fullCut.soon || path.length === full.length) ? fullCut : null;
   // Blocked by a ball within the ball's first BLOCKED_SOON_M of flight: the label says so, as the
   // cross is small and under the gauge (a heap ball thrown into its neighbour rolled off along the
   // heap), and letting go throws nothing (release).
@@ -3300,7 +3317,7 @@ function updateStatus(): void {
       : lastCall.ball !== 0
         ? 'Last throw…'
         : cheering
-          ? `${praiseFor(lastBasket)}${/\d$/.test(praiseFor(lastBasket)) ? ' =' : ''} +${lastBasket.points} · ${lastBasket.score === 1 ? 'the clock runs' : `+${TIME_PER_BASKET} s`}${lastBasket.moved ? (hoopAt !== round.spot ? ' · the hoop moves next' : ' · the hoop moved') : ''}`
+          ? `${praiseFor(lastBasket)}${/\d$/.test(praiseFor(lastBasket)) ? ' =' : ''} +${lastBasket.points} · ${lastBasket.score === 1 ? 'the clock runs' : `+${TIME_PER_BASKET} s`}${lastBasket.moved ? (TALL ? ' · new hoop' : hoopAt !== round.spot ? ' · the hoop moves next' : ' · the hoop moved') : ''}`
           : round.phase === 'ready'
             ? `Score once to start the ${round.seconds} s clock`
             : round.streak > 0
@@ -3490,7 +3507,7 @@ function drawEndCard(over: boolean): void {
       // The result first (against the best), then what made it, then a tip; Play again is under the card.
       lines: [
         bestLine,
-        `${plural(round.score, 'basket', 'baskets')} from ${plural(round.shots, 'throw', 'throws')}`,
+        `${plural(round.score, 'basket', 'baskets')} from ${plural(round.allShots, 'throw', 'throws')}`,
         `Longest streak ${round.bestStreak}`,
         ...bonus,
         tip,
@@ -3573,6 +3590,13 @@ shell.expose({
    * the box's top or the hoop.
    */
   aimPath: (): number[] => aimPath(),
+  /** The aiming arc as drawn: its first part only (preview.ts shortArc) unless help is on (aimHelp); points, m, or [] as aimPath. */
+  aimShown: (): number[] => (aimHelp(missesInARow, aimHelpAlways) ? aimPath() : shortArc(aimPath(), hoopSpots(TALL)[hoopAt]!.x)),
+  /** Turns the aiming arc's help on or off for good (its whole flight and verdict: preview.ts); @returns whether help shows now (also after 3 misses in a row). */
+  aimHelp: (on?: boolean): boolean => {
+    if (on !== undefined) aimHelpAlways = on;
+    return aimHelp(missesInARow, aimHelpAlways);
+  },
   /**
    * Where and why the aiming arc being pulled is cut short (a ball, a ramp, the backboard, the rim or the net; m),
    * with the words shown beside its cross ('' when the gauge's label says it): null when not pulling

@@ -1692,6 +1692,19 @@ describe('bouncing balls: the hoop game', () => {
       await touch('touchMove', at.x + hit![0]! / 2, at.y + hit![1]! / 2);
       await touch('touchMove', at.x + hit![0]!, at.y + hit![1]!);
       await g.frames(1);
+      // Without help (none of 3 misses in a row yet: preview.ts) the arc shows only its first part and
+      // no verdict: the aim is the player's to judge.
+      type Shown = { aimLabel(): string; aimShown(): number[]; aimPath(): number[]; aimHelp(on?: boolean): boolean };
+      const plain = await g.page.evaluate(() => {
+        const game = window.game as unknown as Shown;
+        return { help: game.aimHelp(), label: game.aimLabel(), shown: game.aimShown().length, path: game.aimPath().length };
+      });
+      expect(plain.help).toBe(false);
+      expect(plain.label).not.toContain('on target');
+      expect(plain.shown).toBeLessThan(plain.path);
+      // With help on (as after 3 misses in a row) the whole arc and its verdict show.
+      await g.page.evaluate(() => (window.game as unknown as Shown).aimHelp(true));
+      await g.frames(1);
       // The aim says so: "on target" (the assist drew it to a basket's middle), and the arc, down
       // through the opening, is not labelled as cut by the net it may then fall into ("hits the net").
       const aim = await g.page.evaluate(() => {
@@ -2447,12 +2460,15 @@ describe('bouncing balls: cancelling, full-power pulls and the end of a round mi
     type CutGame = AimGame & {
       spawn(x: number, y: number): number;
       aimCut(): { kind: string; x: number; y: number; words: string } | null;
+      aimHelp(on?: boolean): boolean;
     };
     await g.page.evaluate(() => {
       const game = window.game as unknown as CutGame;
       game.paused = true;
       for (const id of game.ballIds()) game.remove(id);
       game.spawn(8, 4);
+      // The arc's verdict past its first part is help (preview.ts: shown after 3 misses in a row).
+      game.aimHelp(true);
     });
     const at = await g.page.evaluate(() => (window.game as unknown as CutGame).positions());
     const from = await g.worldToPage(at[0]!, at[1]!);

@@ -117,6 +117,9 @@ describe('hoop round', () => {
     roundShot(r);
     expect(r.phase).toBe('over');
     expect(r.shots).toBe(2); // the one after the first basket; none after time is up
+    // The end card's count has every throw of the round, the warm-up's two misses too (it said "2
+    // baskets from 2 throws" to a player who had thrown 3).
+    expect(r.allShots).toBe(3);
   });
   it(`the hoop stays for ${BASKETS_PER_HOOP} baskets (a throw that scored scores again), then moves; each basket after the first gives ${TIME_PER_BASKET} s back`, () => {
     const r = createRound();
