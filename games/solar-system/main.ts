@@ -109,6 +109,7 @@ import {
   Vector3,
 } from 'three';
 import { adviseAim, adviseBurn, createAimAdvice, createBurnAdvice, SPEED_STEP, startAim, TURN_STEP, tutorialAim } from './advice';
+import { aimRings, skillStars } from './aim-depth';
 import { displayRadius, toDisplay } from './distance-scale';
 import { copyForecast, createForecast, ForecastJob } from './forecast';
 import { keplerState } from './kepler';
@@ -381,6 +382,24 @@ let worldSerial = 0;
 let flight: Flight | null = null;
 /** Launches on this mission since it started (the score's tries part, ./missions.ts missionScore). */
 let launches = 0;
+/** The aim's centredness at the last launch (./aim-depth.ts aimRings; 0 on the first mission): three stars want it. */
+let launchRings = 0;
+/** `aimDepth`'s last answer and the aim and moment it was for. */
+let depthKey = '',
+  depthRings = 0;
+/**
+ * How centred the aim is now (./aim-depth.ts aimRings, two-body, cheap), 0 on the first mission
+ * (its stars are the speed's alone); worked out once per aim and moment.
+ */
+function aimDepth(): number {
+  if (missionIndex === 0) return 0;
+  const key = `${missionIndex} ${shell.world.time} ${aim.angle} ${aim.speed}`;
+  if (key !== depthKey) {
+    depthRings = aimRings(shell.world, handles, mission(), aim);
+    depthKey = key;
+  }
+  return depthRings;
+}
 /** Flights on this mission since it started that did not arrive: after one the aim shows the verdict. */
 let failedTries = 0;
 /**
@@ -668,6 +687,7 @@ function launch(): void {
   if (phase !== 'aim') return;
   // The forecast shown is for this very moment and aim (worked out now if it was not yet).
   updateForecast(true);
+  launchRings = aimDepth();
   planFlight(shell.world, handles, mission(), aim, plan);
   launchMs = handles.epoch + shell.world.time * 86_400_000;
   flight = launchProbe(shell.world, handles, mission(), aim, plan, baseStep());
@@ -695,7 +715,7 @@ function endOfFlight(): void {
   if (flight.state === 'arrived') {
     arrivalAt = performance.now();
     const spent = flight.aim.speed + flight.fuelUsed;
-    const stars = starsFor(flight.mission, spent);
+    const stars = skillStars(missionIndex, flight.mission, spent, launchRings, flight.burns);
     const score = missionScore(flight.mission, Math.max(spent, 1e-3), Math.max(flight.elapsed, 1e-3), Math.max(1, launches));
     const record = score.total > bestScore[missionIndex]!;
     const before = bestScore[missionIndex]!;
@@ -2449,7 +2469,10 @@ function verdict(m: Mission): [string, string] {
   if (f.outcome === 'sun') return [`✗ falls into the Sun${scheme}`, 'bad'];
   if (phase === 'aim') {
     if (f.outcome === 'arrived')
-      return [`✓ meets ${m.target} on day ${Math.round(f.end)} · ${starText(starsFor(m, aim.speed))}${scheme}`, 'ok'];
+      return [
+        `✓ meets ${m.target} on day ${Math.round(f.end)} · ${starText(skillStars(missionIndex, m, aim.speed, aimDepth(), 0))}${scheme}`,
+        'ok',
+      ];
     // The target's distance from the Sun when the probe comes closest (not now: it moves meanwhile).
     const rT = Math.hypot(f.targetAt[0]!, f.targetAt[1]!, f.targetAt[2]!);
     const outward = rT > distanceFromSun('Earth');
@@ -2526,7 +2549,7 @@ function reading(m: Mission): [string, string] {
  * little behind", "far ahead": ./meeting-words.ts forecastWords).
  */
 function meetingVerdict(m: Mission, i: number): [string, string] {
-  if (missionIndex > 0) return forecastWords(m.target, forecast, m.zone, crossingTarget);
+  if (missionIndex > 0) return forecastWords(m.target, forecast, m.zone, crossingTarget, aimDepth());
   const lag = targetLag(forecast, i, crossingTarget, sunMu());
   const arrived = forecast.outcome === 'arrived';
   return meetingWords(m.target, lag, arrived, starText(starsFor(m, aim.speed)), missWords(forecast.closest, m.zone));
@@ -2608,8 +2631,10 @@ function updateStatus(force = false): void {
   } else if (phase === 'done' && flight) {
     const burns = flight.fuelUsed > 0 ? ` + ${flight.fuelUsed.toFixed(2)} km/s of burns` : '';
     if (flight.state === 'arrived') {
-      const s = starsFor(m, flight.aim.speed + flight.fuelUsed);
-      line = `✓ Arrived at ${m.target} after ${Math.round(flight.elapsed)} days! ${starText(s)} (${flight.aim.speed.toFixed(1)} km/s launch${burns}; 3 stars up to ${m.stars3} km/s in all)`;
+      const s = skillStars(missionIndex, m, flight.aim.speed + flight.fuelUsed, launchRings, flight.burns);
+      const why =
+        missionIndex > 0 && s === 2 && starsFor(m, flight.aim.speed + flight.fuelUsed) === 3 ? ', launched on “close” with no burn' : '';
+      line = `✓ Arrived at ${m.target} after ${Math.round(flight.elapsed)} days! ${starText(s)} (${flight.aim.speed.toFixed(1)} km/s launch${burns}; 3 stars up to ${m.stars3} km/s in all${why})`;
       if (best.every((b) => b > 0)) line += ` · All missions flown: ${total} of ${3 * MISSIONS.length} stars`;
       cls = 'won';
     } else if (flight.state === 'sun') {
