@@ -108,7 +108,17 @@ import {
   Vector2,
   Vector3,
 } from 'three';
-import { adviseAim, adviseBurn, createAimAdvice, createBurnAdvice, SPEED_STEP, startAim, TURN_STEP, tutorialAim } from './advice';
+import {
+  adviseAim,
+  adviseBurn,
+  burnPressSize,
+  createAimAdvice,
+  createBurnAdvice,
+  SPEED_STEP,
+  startAim,
+  TURN_STEP,
+  tutorialAim,
+} from './advice';
 import { aimRings, skillStars } from './aim-depth';
 import { displayRadius, toDisplay } from './distance-scale';
 import { copyForecast, createForecast, ForecastJob } from './forecast';
@@ -796,8 +806,9 @@ let lastBurn = -Infinity;
 let lastBurnDone = -Infinity;
 
 /**
- * A mid-course burn of BURN_STEP km/s (./missions.ts burnProbe) while the probe flies: the new
- * course is forecast at once (its verdict shows in the status line and the dotted path).
+ * A mid-course burn of BURN_STEP km/s (./missions.ts burnProbe) while the probe flies, or the whole
+ * burn the hint advises in one press of its key (./advice.ts burnPressSize): the new course is
+ * forecast at once (its verdict shows in the status line and the dotted path).
  */
 function burn(direction: BurnDirection): void {
   if (phase !== 'flight' || !flight) return;
@@ -813,7 +824,8 @@ function burn(direction: BurnDirection): void {
   }
   heliocentricState(shell.world, handles, flight.probe, state6);
   burnDirection(state6, direction, burnPush);
-  if (burnProbe(shell.world, handles, flight, direction, BURN_STEP, plan) > 0) {
+  const size = burnPressSize(burnAdvice, direction, hinting && adviceKey === forecastKey);
+  if (burnProbe(shell.world, handles, flight, direction, size, plan) > 0) {
     flightDaysPerSecond = flightRate(flight.deadline);
     lastBurnDone = t;
     // A burn is heard: a short whoosh and the chime.
@@ -2371,7 +2383,6 @@ const BURN_WORDS: Record<BurnDirection, string> = {
   out: 'away from the Sun',
   in: 'towards the Sun',
 };
-const times = (n: number): string => (n === 1 ? 'once' : n === 2 ? 'twice' : `${n} times`);
 /** The hints (./advice.ts), the forecast they were worked out for, and when (performance.now(), ms). */
 const aimAdvice = createAimAdvice();
 const burnAdvice = createBurnAdvice();
@@ -2436,7 +2447,8 @@ function hint(m: Mission): string {
     if (b.kind === 'empty') return 'No fuel left for burns: the probe coasts. Abort to try the launch again.';
     if (b.kind === 'none') return 'The fuel left cannot bring it into the ring now. Abort to try the launch again.';
     const n = b.presses;
-    return `${named(`Press ${BURN_KEYS[b.direction]}`, `Tap ${BURN_NAMES[b.direction]}`)} ${times(n)} now (${(n * BURN_STEP).toFixed(2)} km/s ${BURN_WORDS[b.direction]}): then it arrives on day ${Math.round(b.forecast.end)}.`;
+    // One press makes the whole burn (burnPressSize), so the hint cannot expire half done.
+    return `${named(`Press ${BURN_KEYS[b.direction]}`, `Tap ${BURN_NAMES[b.direction]}`)} once now: ${(n * BURN_STEP).toFixed(2)} km/s ${BURN_WORDS[b.direction]} in one burn, then it arrives on day ${Math.round(b.forecast.end)}.`;
   }
   return flight?.state === 'arrived'
     ? `Next mission: ${named('Enter', 'tap Next mission')}.`

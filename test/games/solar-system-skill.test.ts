@@ -9,10 +9,11 @@
 import { createPhysicsWorld, slotOf, step } from '@bitphysics/physics';
 import { solarSystem } from '@bitphysics/projects';
 import { describe, expect, test } from 'vitest';
+import { burnPressSize } from '../../games/solar-system/advice';
 import { aimRings, STAR_RINGS, skillStars } from '../../games/solar-system/aim-depth';
 import { forecastLaunch } from '../../games/solar-system/forecast';
 import { forecastWords } from '../../games/solar-system/meeting-words';
-import { heliocentricState, MISSIONS, missionTimeStep, starsFor } from '../../games/solar-system/missions';
+import { BURN_STEP, heliocentricState, MISSIONS, missionTimeStep, starsFor } from '../../games/solar-system/missions';
 import { nextLaunchWindow } from '../../games/solar-system/wait-pace';
 
 describe('skill stars', () => {
@@ -67,5 +68,14 @@ describe('skill stars', () => {
     expect(arrived).toBeGreaterThan(2);
     expect(close).toBeLessThan(arrived);
     expect(three).toBeLessThan(oldThree);
+  });
+
+  test('a press of the advised burn’s key makes the whole burn the hint worked out; other presses one step', () => {
+    const advice = { kind: 'burn' as const, direction: 'faster' as const, presses: 17 };
+    // Mercury's "Press ↑ 17 times now": one press, 0.85 km/s (before: 17 presses of 0.05 km/s).
+    expect(burnPressSize(advice, 'faster', true)).toBeCloseTo(17 * BURN_STEP, 12);
+    expect(burnPressSize(advice, 'slower', true)).toBe(BURN_STEP);
+    expect(burnPressSize(advice, 'faster', false)).toBe(BURN_STEP);
+    expect(burnPressSize({ ...advice, kind: 'coast' }, 'faster', true)).toBe(BURN_STEP);
   });
 });
