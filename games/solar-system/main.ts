@@ -2745,8 +2745,8 @@ cardStyle.textContent = `
 .ss-card .ss-card-parts { display: grid; grid-template-columns: 1fr auto; gap: 0 10px; text-align: left; margin: 6px 4px; font-size: 13px; color: #d6deea; }
 .ss-card .ss-card-parts b { text-align: right; color: #ffffff; }
 .ss-card .ss-card-map { display: flex; justify-content: center; gap: 4px; flex-wrap: wrap; margin: 8px 0 4px; }
-.ss-card .ss-card-map span { padding: 1px 6px; border-radius: 6px; background: #1a2336; color: #d6deea; font-size: 12px; border: 1px solid #2c3a55; }
-.ss-card .ss-card-map span.now { border-color: #ffe066; color: #ffe066; }
+.ss-card .ss-card-map button { padding: 1px 6px; border-radius: 6px; background: #1a2336; color: #d6deea; font: inherit; font-size: 12px; border: 1px solid #2c3a55; cursor: pointer; min-height: 28px; }
+.ss-card .ss-card-map button.now { border-color: #ffe066; color: #ffe066; }
 .ss-card .ss-card-map i { font-style: normal; color: #ffd166; }
 .ss-card .ss-card-next { color: #9fd3ff; font-size: 13px; margin: 4px 0 0; }
 `;
@@ -2867,7 +2867,9 @@ function showCard(f: Flight): void {
       parts,
       small(
         r.stars < 3
-          ? `★★★ needs ${m.stars3} km/s or less in all: hold Wait for a cheaper moment, then aim again.`
+          ? spent <= m.stars3 + 1e-9
+            ? '★★★ also wants the launch made on “close” (centred on the ring) and no burn: aim again.'
+            : `★★★ needs ${m.stars3} km/s or less in all: hold Wait for a cheaper moment, then aim again.`
           : 'Fewer km/s or a quicker flight scores more: a better moment may be cheaper.',
       ),
     );
@@ -2887,7 +2889,11 @@ function showCard(f: Flight): void {
   const map = document.createElement('div');
   map.className = 'ss-card-map';
   MISSIONS.forEach((x, i) => {
-    const chip = put(map, 'span', i === missionIndex ? 'now' : '', `${i + 1} ${x.target} `);
+    // Each mission's tag is a button that flies it (it looked like one and did nothing).
+    const chip = put(map, 'button', i === missionIndex ? 'now' : '', `${i + 1} ${x.target} `) as HTMLButtonElement;
+    chip.type = 'button';
+    chip.title = `Fly mission ${i + 1}: ${x.target}`;
+    chip.addEventListener('click', () => startMission(i));
     put(chip, 'i', '', best[i]! > 0 ? '★'.repeat(best[i]!) : '–');
   });
   lines.push(map);
