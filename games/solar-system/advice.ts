@@ -287,3 +287,18 @@ export function startAim(world: PhysicsWorld, handles: SolarSystemHandles, missi
   return { angle, speed };
 }
 const startForecast = createForecast();
+
+/**
+ * How much one press of a burn key in `direction` burns, km/s: the whole advised burn (`advice`'s
+ * presses x BURN_STEP) when the hint shows it (`shown`: the hint is on and its advice is for the
+ * course now) and the press is its direction, else one BURN_STEP. A hint of "Press ↑ 17 times now"
+ * was out of date before 17 presses could be made (on Mercury the flight ended 13 days later), and
+ * at 0.05 km/s a press a big correction took many; one press now makes the burn the hint worked out.
+ */
+export function burnPressSize(
+  advice: Pick<BurnAdvice, 'kind' | 'direction' | 'presses'>,
+  direction: BurnDirection,
+  shown: boolean,
+): number {
+  return shown && advice.kind === 'burn' && advice.direction === direction && advice.presses > 0 ? advice.presses * BURN_STEP : BURN_STEP;
+}

@@ -108,7 +108,18 @@ import {
   Vector2,
   Vector3,
 } from 'three';
-import { adviseAim, adviseBurn, createAimAdvice, createBurnAdvice, SPEED_STEP, startAim, TURN_STEP, tutorialAim } from './advice';
+import {
+  adviseAim,
+  adviseBurn,
+  burnPressSize,
+  createAimAdvice,
+  createBurnAdvice,
+  SPEED_STEP,
+  startAim,
+  TURN_STEP,
+  tutorialAim,
+} from './advice';
+import { aimRings, skillStars } from './aim-depth';
 import { displayRadius, toDisplay } from './distance-scale';
 import { copyForecast, createForecast, ForecastJob } from './forecast';
 import { keplerState } from './kepler';
@@ -381,6 +392,24 @@ let worldSerial = 0;
 let flight: Flight | null = null;
 /** Launches on this mission since it started (the score's tries part, ./missions.ts missionScore). */
 let launches = 0;
+/** The aim's centredness at the last launch (./aim-depth.ts aimRings; 0 on the first mission): three stars want it. */
+let launchRings = 0;
+/** `aimDepth`'s last answer and the aim and moment it was for. */
+let depthKey = '',
+  depthRings = 0;
+/**
+ * How centred the aim is now (./aim-depth.ts aimRings, two-body, cheap), 0 on the first mission
+ * (its stars are the speed's alone); worked out once per aim and moment.
+ */
+function aimDepth(): number {
+  if (missionIndex === 0) return 0;
+  const key = `${missionIndex} ${shell.world.time} ${aim.angle} ${aim.speed}`;
+  if (key !== depthKey) {
+    depthRings = aimRings(shell.world, handles, mission(), aim);
+    depthKey = key;
+  }
+  return depthRings;
+}
 /** Flights on this mission since it started that did not arrive: after one the aim shows the verdict. */
 let failedTries = 0;
 /**
@@ -668,6 +697,7 @@ function launch(): void {
   if (phase !== 'aim') return;
   // The forecast shown is for this very moment and aim (worked out now if it was not yet).
   updateForecast(true);
+  launchRings = aimDepth();
   planFlight(shell.world, handles, mission(), aim, plan);
   launchMs = handles.epoch + shell.world.time * 86_400_000;
   flight = launchProbe(shell.world, handles, mission(), aim, plan, baseStep());
@@ -695,7 +725,7 @@ function endOfFlight(): void {
   if (flight.state === 'arrived') {
     arrivalAt = performance.now();
     const spent = flight.aim.speed + flight.fuelUsed;
-    const stars = starsFor(flight.mission, spent);
+    const stars = skillStars(missionIndex, flight.mission, spent, launchRings, flight.burns);
     const score = missionScore(flight.mission, Math.max(spent, 1e-3), Math.max(flight.elapsed, 1e-3), Math.max(1, launches));
     const record = score.total > bestScore[missionIndex]!;
     const before = bestScore[missionIndex]!;
@@ -776,8 +806,9 @@ let lastBurn = -Infinity;
 let lastBurnDone = -Infinity;
 
 /**
- * A mid-course burn of BURN_STEP km/s (./missions.ts burnProbe) while the probe flies: the new
- * course is forecast at once (its verdict shows in the status line and the dotted path).
+ * A mid-course burn of BURN_STEP km/s (./missions.ts burnProbe) while the probe flies, or the whole
+ * burn the hint advises in one press of its key (./advice.ts burnPressSize): the new course is
+ * forecast at once (its verdict shows in the status line and the dotted path).
  */
 function burn(direction: BurnDirection): void {
   if (phase !== 'flight' || !flight) return;
@@ -793,7 +824,8 @@ function burn(direction: BurnDirection): void {
   }
   heliocentricState(shell.world, handles, flight.probe, state6);
   burnDirection(state6, direction, burnPush);
-  if (burnProbe(shell.world, handles, flight, direction, BURN_STEP, plan) > 0) {
+  const size = burnPressSize(burnAdvice, direction, hinting && adviceKey === forecastKey);
+  if (burnProbe(shell.world, handles, flight, direction, size, plan) > 0) {
     flightDaysPerSecond = flightRate(flight.deadline);
     lastBurnDone = t;
     // A burn is heard: a short whoosh and the chime.
@@ -2351,7 +2383,6 @@ const BURN_WORDS: Record<BurnDirection, string> = {
   out: 'away from the Sun',
   in: 'towards the Sun',
 };
-const times = (n: number): string => (n === 1 ? 'once' : n === 2 ? 'twice' : `${n} times`);
 /** The hints (./advice.ts), the forecast they were worked out for, and when (performance.now(), ms). */
 const aimAdvice = createAimAdvice();
 const burnAdvice = createBurnAdvice();
@@ -2416,7 +2447,8 @@ function hint(m: Mission): string {
     if (b.kind === 'empty') return 'No fuel left for burns: the probe coasts. Abort to try the launch again.';
     if (b.kind === 'none') return 'The fuel left cannot bring it into the ring now. Abort to try the launch again.';
     const n = b.presses;
-    return `${named(`Press ${BURN_KEYS[b.direction]}`, `Tap ${BURN_NAMES[b.direction]}`)} ${times(n)} now (${(n * BURN_STEP).toFixed(2)} km/s ${BURN_WORDS[b.direction]}): then it arrives on day ${Math.round(b.forecast.end)}.`;
+    // One press makes the whole burn (burnPressSize), so the hint cannot expire half done.
+    return `${named(`Press ${BURN_KEYS[b.direction]}`, `Tap ${BURN_NAMES[b.direction]}`)} once now: ${(n * BURN_STEP).toFixed(2)} km/s ${BURN_WORDS[b.direction]} in one burn, then it arrives on day ${Math.round(b.forecast.end)}.`;
   }
   return flight?.state === 'arrived'
     ? `Next mission: ${named('Enter', 'tap Next mission')}.`
@@ -2449,7 +2481,10 @@ function verdict(m: Mission): [string, string] {
   if (f.outcome === 'sun') return [`✗ falls into the Sun${scheme}`, 'bad'];
   if (phase === 'aim') {
     if (f.outcome === 'arrived')
-      return [`✓ meets ${m.target} on day ${Math.round(f.end)} · ${starText(starsFor(m, aim.speed))}${scheme}`, 'ok'];
+      return [
+        `✓ meets ${m.target} on day ${Math.round(f.end)} · ${starText(skillStars(missionIndex, m, aim.speed, aimDepth(), 0))}${scheme}`,
+        'ok',
+      ];
     // The target's distance from the Sun when the probe comes closest (not now: it moves meanwhile).
     const rT = Math.hypot(f.targetAt[0]!, f.targetAt[1]!, f.targetAt[2]!);
     const outward = rT > distanceFromSun('Earth');
@@ -2526,7 +2561,7 @@ function reading(m: Mission): [string, string] {
  * little behind", "far ahead": ./meeting-words.ts forecastWords).
  */
 function meetingVerdict(m: Mission, i: number): [string, string] {
-  if (missionIndex > 0) return forecastWords(m.target, forecast, m.zone, crossingTarget);
+  if (missionIndex > 0) return forecastWords(m.target, forecast, m.zone, crossingTarget, aimDepth());
   const lag = targetLag(forecast, i, crossingTarget, sunMu());
   const arrived = forecast.outcome === 'arrived';
   return meetingWords(m.target, lag, arrived, starText(starsFor(m, aim.speed)), missWords(forecast.closest, m.zone));
@@ -2608,8 +2643,10 @@ function updateStatus(force = false): void {
   } else if (phase === 'done' && flight) {
     const burns = flight.fuelUsed > 0 ? ` + ${flight.fuelUsed.toFixed(2)} km/s of burns` : '';
     if (flight.state === 'arrived') {
-      const s = starsFor(m, flight.aim.speed + flight.fuelUsed);
-      line = `✓ Arrived at ${m.target} after ${Math.round(flight.elapsed)} days! ${starText(s)} (${flight.aim.speed.toFixed(1)} km/s launch${burns}; 3 stars up to ${m.stars3} km/s in all)`;
+      const s = skillStars(missionIndex, m, flight.aim.speed + flight.fuelUsed, launchRings, flight.burns);
+      const why =
+        missionIndex > 0 && s === 2 && starsFor(m, flight.aim.speed + flight.fuelUsed) === 3 ? ', launched on “close” with no burn' : '';
+      line = `✓ Arrived at ${m.target} after ${Math.round(flight.elapsed)} days! ${starText(s)} (${flight.aim.speed.toFixed(1)} km/s launch${burns}; 3 stars up to ${m.stars3} km/s in all${why})`;
       if (best.every((b) => b > 0)) line += ` · All missions flown: ${total} of ${3 * MISSIONS.length} stars`;
       cls = 'won';
     } else if (flight.state === 'sun') {
@@ -2708,8 +2745,8 @@ cardStyle.textContent = `
 .ss-card .ss-card-parts { display: grid; grid-template-columns: 1fr auto; gap: 0 10px; text-align: left; margin: 6px 4px; font-size: 13px; color: #d6deea; }
 .ss-card .ss-card-parts b { text-align: right; color: #ffffff; }
 .ss-card .ss-card-map { display: flex; justify-content: center; gap: 4px; flex-wrap: wrap; margin: 8px 0 4px; }
-.ss-card .ss-card-map span { padding: 1px 6px; border-radius: 6px; background: #1a2336; color: #d6deea; font-size: 12px; border: 1px solid #2c3a55; }
-.ss-card .ss-card-map span.now { border-color: #ffe066; color: #ffe066; }
+.ss-card .ss-card-map button { padding: 1px 6px; border-radius: 6px; background: #1a2336; color: #d6deea; font: inherit; font-size: 12px; border: 1px solid #2c3a55; cursor: pointer; min-height: 28px; }
+.ss-card .ss-card-map button.now { border-color: #ffe066; color: #ffe066; }
 .ss-card .ss-card-map i { font-style: normal; color: #ffd166; }
 .ss-card .ss-card-next { color: #9fd3ff; font-size: 13px; margin: 4px 0 0; }
 `;
@@ -2830,7 +2867,9 @@ function showCard(f: Flight): void {
       parts,
       small(
         r.stars < 3
-          ? `★★★ needs ${m.stars3} km/s or less in all: hold Wait for a cheaper moment, then aim again.`
+          ? spent <= m.stars3 + 1e-9
+            ? '★★★ also wants the launch made on “close” (centred on the ring) and no burn: aim again.'
+            : `★★★ needs ${m.stars3} km/s or less in all: hold Wait for a cheaper moment, then aim again.`
           : 'Fewer km/s or a quicker flight scores more: a better moment may be cheaper.',
       ),
     );
@@ -2850,7 +2889,11 @@ function showCard(f: Flight): void {
   const map = document.createElement('div');
   map.className = 'ss-card-map';
   MISSIONS.forEach((x, i) => {
-    const chip = put(map, 'span', i === missionIndex ? 'now' : '', `${i + 1} ${x.target} `);
+    // Each mission's tag is a button that flies it (it looked like one and did nothing).
+    const chip = put(map, 'button', i === missionIndex ? 'now' : '', `${i + 1} ${x.target} `) as HTMLButtonElement;
+    chip.type = 'button';
+    chip.title = `Fly mission ${i + 1}: ${x.target}`;
+    chip.addEventListener('click', () => startMission(i));
     put(chip, 'i', '', best[i]! > 0 ? '★'.repeat(best[i]!) : '–');
   });
   lines.push(map);

@@ -564,8 +564,8 @@ describe('projects', () => {
     expect(budget).toBeGreaterThanOrEqual(975);
     expect(budget).toBeLessThanOrEqual(990);
     // At desktop size too, the card lists the missions with their stars, as on a phone (a stranger
-    // who looked during the banner took the desktop for a banner alone).
-    const chips = await card.locator('.ss-card-map > span').allTextContents();
+    // who looked during the banner took the desktop for a banner alone); each is a button that flies it.
+    const chips = await card.locator('.ss-card-map > button').allTextContents();
     expect(chips.map((c) => c.replace(/ [★–]+$/, ''))).toEqual([
       '1 Mars',
       '2 Venus',

@@ -10,6 +10,7 @@
 import { createPhysicsWorld, slotOf, step } from '@bitphysics/physics';
 import { solarSystem } from '@bitphysics/projects';
 import { describe, expect, test } from 'vitest';
+import { aimRings } from '../../games/solar-system/aim-depth';
 import { forecastLaunch } from '../../games/solar-system/forecast';
 import { CLOSE_RINGS, FAR_RINGS, forecastWords } from '../../games/solar-system/meeting-words';
 import { heliocentricState, MISSIONS, missionTimeStep } from '../../games/solar-system/missions';
@@ -31,11 +32,13 @@ describe('forecastWords', () => {
         for (const speed of [2.4, 2.8, 3.3]) {
           const f = forecastLaunch(world, handles, m, { angle, speed }, 1 / 24);
           if (f.outcome === 'sun') continue;
-          const [words, cls] = forecastWords('Venus', f, m.zone, target);
-          const rings = f.closest / m.zone;
+          const depth = aimRings(world, handles, m, { angle, speed });
+          const [words, cls] = forecastWords('Venus', f, m.zone, target, depth);
+          const rings = f.outcome === 'arrived' ? depth : f.closest / m.zone;
           const what = `day ${day}, ${angle}°, ${speed} km/s: ${words}, closest ${rings.toFixed(2)} rings`;
           expect(cls).toBe('edge');
-          // The band is the closest approach's: exact thresholds, no tolerance (both read f.closest).
+          // The band is the closest approach's (an arrival's: the aim's centredness, its forecast
+          // stopping at the ring's edge): exact thresholds, no tolerance (both read the same numbers).
           const band = rings <= CLOSE_RINGS ? 'close' : rings <= FAR_RINGS ? 'little' : 'far';
           bands[band]++;
           expect(words, what).toBe(
@@ -43,8 +46,8 @@ describe('forecastWords', () => {
               ? 'Venus will be close'
               : `Venus will be ${band === 'far' ? 'far' : 'a little'} ${/behind/.test(words) ? 'behind' : 'ahead'}`,
           );
-          // Every arrival reads "close".
-          if (f.outcome === 'arrived') expect(words, what).toBe('Venus will be close');
+          // "Close" is an arrival: a launch on it reaches the ring.
+          if (band === 'close') expect(f.outcome, what).toBe('arrived');
           // The side agrees with the days Venus (on its Kepler orbit) reaches the probe's place at the
           // closest approach, when that is over a day either way (a nearer call is on the edge).
           if (band !== 'close' && !f.closestAtLaunch) {
@@ -55,8 +58,8 @@ describe('forecastWords', () => {
         }
       for (let k = Math.round(100 / dt); k > 0; k--) step(world);
     }
-    // The aims span every band.
+    // The aims span every band ("close", a centred arrival, is the rarest: 2 of 54 on this grid).
     expect(checked).toBeGreaterThan(40);
-    for (const n of Object.values(bands)) expect(n).toBeGreaterThan(2);
+    for (const n of Object.values(bands)) expect(n).toBeGreaterThan(1);
   });
 });

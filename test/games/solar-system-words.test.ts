@@ -5,6 +5,7 @@
  */
 
 import { describe, expect, test } from 'vitest';
+import { STAR_RINGS } from '../../games/solar-system/aim-depth';
 import { CLOSE_RINGS, coarseWords, FAR_RINGS, meetingWords } from '../../games/solar-system/meeting-words';
 
 describe('meetingWords', () => {
@@ -17,8 +18,10 @@ describe('meetingWords', () => {
 
   test('from the second mission: no ✓, no days, one colour; bands of the closest approach in rings, the side the target’s', () => {
     const coarse = (rings: number, side: number) => coarseWords('Venus', rings, side);
-    // An arrival (under a ring) and a near miss both "close".
+    // "Close" is a centred arrival (three stars' band); a grazing one is "a little" off.
+    expect(CLOSE_RINGS).toBe(STAR_RINGS);
     expect(coarse(0.4, 1)).toEqual(['Venus will be close', 'edge']);
+    expect(coarse(0.9, 1)).toEqual(['Venus will be a little behind', 'edge']);
     expect(coarse(CLOSE_RINGS, -1)).toEqual(['Venus will be close', 'edge']);
     expect(coarse(CLOSE_RINGS + 0.01, 1)).toEqual(['Venus will be a little behind', 'edge']);
     expect(coarse(3, -1)).toEqual(['Venus will be a little ahead', 'edge']);
