@@ -2647,9 +2647,10 @@ function drawPointer(): void {
   const soon = cut?.soon === true;
   shownBlocked = { blocked: soon, x: lastX, y: lastY };
   let label = `${soon ? 'blocked · ' : ''}power ${Math.round(100 * power)}%${capped && !onTarget ? ' (max)' : ''}${onTarget ? ' · on target' : ''}`;
-  // From where no pull scores (under the hoop, say) the label says that instead: a pull there only misses.
+  // From where no pull scores (under the hoop, say) the label says that instead of the power (a ball
+  // in the way still said first: letting go then throws nothing).
   const noShot = noShotAt(t.x, t.y);
-  if (noShot !== '') label = noShot;
+  if (noShot !== '') label = `${soon ? 'blocked · ' : ''}${noShot}`;
   else if (pressed !== 0) {
     const points = BALL_POINTS[kindOf(pressed)];
     const lifted = lift !== null && (lift[0] !== P.x[slotOf(pressed)] || lift[1] !== P.y[slotOf(pressed)]);
