@@ -2647,15 +2647,14 @@ function drawPointer(): void {
   const soon = cut?.soon === true;
   shownBlocked = { blocked: soon, x: lastX, y: lastY };
   let label = `${soon ? 'blocked · ' : ''}power ${Math.round(100 * power)}%${capped && !onTarget ? ' (max)' : ''}${onTarget ? ' · on target' : ''}`;
-  // From where no pull scores (under the hoop, say) the label says that instead of the power (a ball
-  // in the way still said first: letting go then throws nothing).
-  const noShot = noShotAt(t.x, t.y);
-  if (noShot !== '') label = `${soon ? 'blocked · ' : ''}${noShot}`;
-  else if (pressed !== 0) {
+  if (pressed !== 0) {
     const points = BALL_POINTS[kindOf(pressed)];
     const lifted = lift !== null && (lift[0] !== P.x[slotOf(pressed)] || lift[1] !== P.y[slotOf(pressed)]);
     label = `${lifted ? 'lifted · ' : ''}${label} · ${points} ${points === 1 ? 'point' : 'points'}`;
   } else label = `new ball · ${label} · ${BALL_POINTS.basketball} point`;
+  // From where no pull scores (under the hoop, say) a line over it says so: a pull there only misses.
+  const noShot = noShotAt(t.x, t.y);
+  if (noShot !== '') label = `${noShot}\n${label}`;
   showHoldLabel(label, ox, oy - gr - 6);
   if (cut !== null) {
     const sx = cam.toScreenX(cut.x),
