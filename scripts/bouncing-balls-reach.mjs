@@ -10,7 +10,9 @@
 // 1280 x 800, a finger's at 390 x 844) measures how forgiving the slingshot is: for baskets from
 // every third natural start, the window of pull lengths (speed, at the basket's angle) and of
 // sideways pull (angle, at its speed) that still score, in px of pull at that full pull
-// (games/bouncing-balls/main.ts fullPull; the pull for a speed from hoop.ts slingPull); then, for the
+// (games/bouncing-balls/main.ts fullPull; the pull for a speed from hoop.ts slingPull, on the tall box
+// with the phone's curve for that start, hoop.ts slingRoom; baskets faster than its full pull left
+// out); then, for the
 // same baskets, the runs of pull length and of sideways pull round the basket's pull that score as
 // thrown without and with the aim assist (games/bouncing-balls/aim-assist.ts assistAim; a finger's on
 // the tall box, a mouse's on the wide one), and the share of pulls off the basket's by a normal
@@ -53,8 +55,8 @@ if (pullAt >= 0) {
   const median = (a) => [...a].sort((x, y) => x - y)[Math.floor(a.length / 2)];
   for (const tall of [false, true]) {
     const full = tall ? phone : desk;
-    // Pull length, px, of a throw at `speed` m/s (hoop.ts slingPull, the inverse of the slingshot's curve).
-    const pullOf = (speed) => r.slingPull(Math.min(r.MAX_THROW_SPEED, speed), full);
+    // The slingshot's curve from height y: the phone's (slingRoom) on the tall box, the 20 m/s one on the wide.
+    const roomOf = (spot, y) => (tall ? r.slingRoom(y, spot.y, 9.81) : undefined);
     const speedPx = [],
       anglePx = [],
       pulls = [],
@@ -69,7 +71,10 @@ if (pullAt >= 0) {
       const starts = r.naturalStarts(spot, tall);
       for (let k = 0; k < starts.length; k += 6) {
         const t = r.findBasket(spot, tall, starts[k], starts[k + 1]);
-        if (!t) continue;
+        const room = roomOf(spot, starts[k + 1]);
+        if (!t || t.speed > (room ? room.top : r.MAX_THROW_SPEED)) continue;
+        // Pull length, px, of a throw at `speed` m/s (hoop.ts slingPull, the inverse of the slingshot's curve).
+        const pullOf = (speed) => r.slingPull(Math.min(room ? room.top : r.MAX_THROW_SPEED, speed), full, room);
         const edge = (key, d) => {
           let v = t[key];
           while (Math.abs(v - t[key]) < 5 && r.cleanBasket(spot, tall, { ...t, [key]: v + d })) v += d;
@@ -83,10 +88,10 @@ if (pullAt >= 0) {
         const raw = (px, py) => {
           const l = Math.hypot(px, py);
           if (l === 0 || l > full) return false;
-          return r.cleanBasket(spot, tall, { x, y, angle: (Math.atan2(py, -px) * 180) / Math.PI, speed: r.slingSpeed(l, full) });
+          return r.cleanBasket(spot, tall, { x, y, angle: (Math.atan2(py, -px) * 180) / Math.PI, speed: r.slingSpeed(l, full, room) });
         };
         const assisted = (px, py) => {
-          const a = r.assistAim(px, py, x, y, spot, { gravity: 9.81, fullPull: full, finger: tall }, raw);
+          const a = r.assistAim(px, py, x, y, spot, { gravity: 9.81, fullPull: full, finger: tall, ...(room ? { room } : {}) }, raw);
           return a ? raw(a[0], a[1]) : raw(px, py);
         };
         const at = (scores, l, deg) => {

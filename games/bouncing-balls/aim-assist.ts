@@ -1,9 +1,10 @@
 /**
  * The slingshot's aim assist of bouncing balls: a pull close to one that throws through the middle of
- * the hoop is drawn to it, for a mouse and a finger alike. Without it the pulls that score were a band
- * some 20 px long and 13 px across on a desktop (420 px full pull) and 7 by 4 px on a phone held
- * upright (138 px: a finger's full pull at 390 x 844), narrower than a hand holds still while it lets
- * go. "Close" is measured as a player aims: in share of the pull's length (the throw's speed) and in
+ * the hoop is drawn to it, for a mouse and a finger alike. Without it the pulls that score are a band
+ * some 20 px long and 13 px across on a desktop (420 px full pull) and 37 by 8 px on a phone held
+ * upright (138 px: a finger's full pull at 390 x 844, on the phone's curve, hoop.ts slingRoom; at the
+ * tightest starts 17 by 5 px), across narrower than a hand holds still while it lets go (medians of
+ * `node scripts/bouncing-balls-reach.mjs --pull`). "Close" is measured as a player aims: in share of the pull's length (the throw's speed) and in
  * degrees of its direction, so a long desktop pull and a short phone one get the same leeway of speed
  * and angle, and a finger at least AIM_ASSIST's px either way (a thumb's jitter). No DOM: the page's
  * currentThrow and the node tests call it.
@@ -14,7 +15,7 @@ import { type HoopSpot, MAX_THROW_SPEED, type SlingRoom, slingPull } from './hoo
  * How far the assist reaches from a pull to the pull of a throw through the hoop: `share` of the
  * pull's length along it (about that share of the throw's speed), `degrees` of its direction across
  * it, and for a finger at least `fingerLength` and `fingerSide` px (a thumb moves a few px as it
- * lifts; a phone's pulls that score are 28 to 74 px long). An ellipse: a pull off in both ways at once
+ * lifts; a phone's pulls that score are 38 to 136 px long). An ellipse: a pull off in both ways at once
  * reaches less far in each.
  */
 export const AIM_ASSIST = Object.freeze({ share: 0.1, degrees: 5, fingerLength: 14, fingerSide: 6 });

@@ -593,8 +593,8 @@ export function slingVelocity(pullX: number, pullY: number, fullPull: number, ro
 
 /**
  * How far a finger's pull is drawn to a throw that scores, px of pull (assistPull): on a phone the
- * pull lengths that score span a few px (a 234 px full pull, about 1 % of the speed a px), finer than
- * a thumb holds still while it lets go.
+ * pull lengths that score span 17 px at the tightest starts (a 138 px full pull on the phone's curve,
+ * slingRoom; scripts/bouncing-balls-reach.mjs --pull), little more than a thumb moves as it lets go.
  */
 export const PULL_ASSIST_PX = 14;
 

@@ -144,6 +144,7 @@ import { createKnockLimiter, KNOCK_LIMITS } from './knocks';
 import { drawFloor, drawGlint, drawShadow, drawWall, shadeBallTexture } from './looks';
 import { aimHelp, shortArc } from './preview';
 import { pressInBox, ringInside } from './pull-fit';
+import { noShotWords } from './reach';
 import {
   applyDrag,
   applyGravity,
@@ -225,7 +226,19 @@ let hoopMovedAt = Number.NEGATIVE_INFINITY;
  */
 let flights = new Map<
   number,
-  { scores: boolean; up: boolean; x: number; y: number; top: number; kind: BallKind; at: number; touched: boolean; trick: boolean }
+  {
+    scores: boolean;
+    up: boolean;
+    x: number;
+    y: number;
+    top: number;
+    kind: BallKind;
+    at: number;
+    touched: boolean;
+    trick: boolean;
+    /** noShotAt of its start: '' when some pull from there scores. */
+    noShot: string;
+  }
 >();
 /** The player's basketballs (made by a throw or a click from empty space): drawn orange with seams. */
 let basketballs = new Set<number>();
@@ -789,7 +802,9 @@ function playHoop(world: PhysicsWorld): void {
         missesInARow++;
         // Every miss is said, with why (a throw off the ceiling back onto the heap looked like none).
         missAt = playSeconds;
-        missSaid = missWords(broke, b.top, layoutOf(TALL).box.max[1] - world.components.Ball.radius[slotOf(e)]!, spots[hoopAt]!);
+        missSaid = b.noShot
+          ? `Missed · ${b.noShot}${broke ? ' · streak over' : ''}`
+          : missWords(broke, b.top, layoutOf(TALL).box.max[1] - world.components.Ball.radius[slotOf(e)]!, spots[hoopAt]!);
         // A falling pair of low notes: the streak is gone.
         if (broke) {
           sound.chime(294, 0.2);
@@ -799,7 +814,11 @@ function playHoop(world: PhysicsWorld): void {
       // Said on the court too, where the ball is (the status row is far from a thumb's throw).
       // Short enough for a phone's court: the streak is in the status row.
       const ceiling = layoutOf(TALL).box.max[1] - world.components.Ball.radius[slotOf(e)]!;
-      sayOnCourt(b.scores ? missWords(false, b.top, ceiling, spots[hoopAt]!) : b.up ? 'Up through the net' : 'Too high to score', x, y);
+      // A throw from where no pull scores says so (noShotAt), in short: the status row says where to go.
+      const said = b.noShot
+        ? `No shot ${b.noShot.slice('no shot '.length, b.noShot.indexOf(':'))}`
+        : missWords(false, b.top, ceiling, spots[hoopAt]!);
+      sayOnCourt(b.scores ? said : b.up ? 'Up through the net' : 'Too high to score', x, y);
     }
   }
   // The hoop stays for BASKETS_PER_HOOP baskets (hoop.ts roundBasket), then moves, once no thrown
@@ -1422,6 +1441,25 @@ function roomAt(y: number): SlingRoom | undefined {
 }
 
 /**
+ * What the aiming label says for a throw from (x, y), m, when no pull from there scores in the scene's
+ * default physics (reach.ts noShotWords: g 9.81 m/s^2, no drag, the slingshot's speeds roomAt), else
+ * '': under the hoop, 'no shot from under the hoop: start further out'. Worked out once for each start
+ * (to the cm) and hoop: up to some 3,000 short flights when none scores.
+ */
+function noShotAt(x: number, y: number): string {
+  const p = handles.params;
+  if (p.gravity !== 9.81 || p.drag !== 'none') return '';
+  const key = `${x.toFixed(2)},${y.toFixed(2)},${hoopAt}`;
+  if (noShotMemo.key !== key) {
+    const room = roomAt(y);
+    noShotMemo = { key, words: noShotWords(hoopSpots(TALL)[hoopAt]!, TALL, x, y, room ? room.low : 0, room ? room.top : MAX_THROW_SPEED) };
+  }
+  return noShotMemo.words;
+}
+/** noShotAt's last answer and the start and hoop it is for. */
+let noShotMemo = { key: '', words: '' };
+
+/**
  * The power a throw `t` shows (the gauge, the band, the label), [0, 1]: in the wide box its speed over
  * MAX_THROW_SPEED; in the tall box the share of the full pull that throws at its speed (roomAt), so
  * the full pull shows 100 % there too.
@@ -1952,7 +1990,18 @@ function launch(e: number, thrown: boolean): void {
   if (basketballs.has(e)) renderer.setColor(e, scores ? PLAYER_COLOR : HIGH_COLOR);
   // A drop falls: it cannot go down through the hoop from below the rim, nor be a miss.
   if (thrown)
-    flights.set(e, { scores, up: false, x: bx, y: by, top: by, kind: kindOf(e), at: shell.world.time, touched: false, trick: false });
+    flights.set(e, {
+      scores,
+      up: false,
+      x: bx,
+      y: by,
+      top: by,
+      kind: kindOf(e),
+      at: shell.world.time,
+      touched: false,
+      trick: false,
+      noShot: noShotAt(bx, by),
+    });
   else flights.delete(e);
   if (round.phase !== 'over' && thrown) {
     roundShot(round);
@@ -2620,6 +2669,9 @@ function drawPointer(): void {
     const lifted = lift !== null && (lift[0] !== P.x[slotOf(pressed)] || lift[1] !== P.y[slotOf(pressed)]);
     label = `${lifted ? 'lifted · ' : ''}${label} · ${points} ${points === 1 ? 'point' : 'points'}`;
   } else label = `new ball · ${label} · ${BALL_POINTS.basketball} point`;
+  // From where no pull scores (under the hoop, say) a line over it says so: a pull there only misses.
+  const noShot = noShotAt(t.x, t.y);
+  if (noShot !== '') label = `${noShot}\n${label}`;
   showHoldLabel(label, ox, oy - gr - 6);
   if (cut !== null) {
     const sx = cam.toScreenX(cut.x),

@@ -21,6 +21,7 @@ import {
   NET,
   PLAYER_RADIUS,
   throwPath,
+  underHoop,
 } from './hoop';
 import { layoutOf, SEGMENT_RADIUS } from './scene';
 
@@ -189,4 +190,56 @@ export function hoopFits(spot: HoopSpot, tall: boolean): boolean {
         if (distance(px, py, ax, ay, bx, by) < clear) return false;
       }
   return true;
+}
+
+/** Spacing of the points across the opening that anyBasket aims its throws through, m. */
+const ANY_AIM_PITCH = 0.1;
+
+/**
+ * Whether some slingshot throw from (x, y), m, at a speed over `low` and up to `top`, m/s (the
+ * slingshot's range there: hoop.ts slingRoom's low and top on the phone's tall box, 0 and
+ * MAX_THROW_SPEED on the wide one), is a clean basket in the hoop at `spot` (cleanBasket: drag-free, the
+ * other balls left out). Searched as a player's pulls are: every direction 1 degree apart, through
+ * points across the opening ANY_AIM_PITCH apart at the drag-free speed that comes down through each.
+ * False for a start above the shot line (mayScore). About 3,000 short flights when none scores.
+ * @throws RangeError on a non-finite start or speed.
+ */
+export function anyBasket(spot: HoopSpot, tall: boolean, x: number, y: number, low: number, top: number): boolean {
+  if (![x, y, low, top].every(Number.isFinite))
+    throw new RangeError(`anyBasket: start and speeds must be finite, got (${x}, ${y}), ${low}..${top}`);
+  if (!mayScore(spot, y)) return false;
+  const g = 9.81,
+    dy = spot.y - y,
+    { minX, maxX } = hoopOpening(spot);
+  for (let k = 0; k < 179; k++) {
+    // 90, 91, 89, 92, 88, ...: nearest the vertical first (where most baskets are).
+    const angle = 90 + (k % 2 === 0 ? 1 : -1) * Math.ceil(k / 2);
+    const a = (angle * Math.PI) / 180,
+      c = Math.cos(a),
+      s = Math.sin(a);
+    if (Math.abs(c) < 1e-6) continue;
+    for (let aim = minX + ANY_AIM_PITCH / 2; aim < maxX; aim += ANY_AIM_PITCH) {
+      const dx = aim - x,
+        lift = dx * (s / c) - dy;
+      if (lift <= 0 || dx * c <= 0) continue;
+      const speed = Math.sqrt((g * dx * dx) / (2 * c * c * lift));
+      if (!(speed > low && speed <= top)) continue;
+      // Coming down through the rim's line there, not still rising.
+      if (speed * s - (g * dx) / (speed * c) >= 0) continue;
+      if (cleanBasket(spot, tall, { x, y, angle, speed })) return true;
+    }
+  }
+  return false;
+}
+
+/**
+ * What the aiming label says for a throw from (x, y), m, at the hoop at `spot` when no pull there
+ * scores (anyBasket with the slingshot's `low` and `top` speeds, m/s): under the hoop (hoop.ts
+ * underHoop) 'no shot from under the hoop: start further out', elsewhere 'no shot from here: start
+ * further out'; '' when some pull scores, or the start is above the shot line (the page says "too
+ * high" for those).
+ */
+export function noShotWords(spot: HoopSpot, tall: boolean, x: number, y: number, low: number, top: number): string {
+  if (!mayScore(spot, y) || anyBasket(spot, tall, x, y, low, top)) return '';
+  return underHoop(spot, x, y) ? 'no shot from under the hoop: start further out' : 'no shot from here: start further out';
 }
