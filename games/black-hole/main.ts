@@ -26,7 +26,7 @@
  *
  * Drawn: nebulae behind the stars; each hole as a black disc of its Schwarzschild radius with a
  * photon ring, an orange glow and a tilted disc of hot gas whose clumps go round it; the exhaust
- * (particles, additive); the ship with a flame opposite its thrust; its predicted path for the next 3 s (less on later levels: ./levels.ts `previewSeconds`; after a tap, with the
+ * (particles, additive); the ship with a flame opposite its thrust; its predicted path for the next 3 s on level 1 (the next 1-1.5 s from level 2, the full 3 s again after repeated falls: ./levels.ts `previewSeconds`; after a tap, with the
  * thrust ending where the tap's does), integrated in a small second world
  * (rules.ts `predictPath`) and drawn as fading dots, red where it falls into a hole (a ring) or leaves the
  * field (a cross at the edge: the ship would be lost), blue where it reaches the finish line, grey where it runs on mid-field, undecided (on the pad, before the first thrust, the path holding ↑ would take, 3 s of it).
@@ -50,7 +50,7 @@ import {
 import { createPauseOverlay, startPixiGame } from '@bitphysics/game-kit/pixi';
 import { type PhysicsWorld, Rng, slotOf, stateHash } from '@bitphysics/physics';
 import { Container, Graphics, Sprite, Text, Texture } from 'pixi.js';
-import { canThrust, type LevelRun, levelPoints, previewSeconds, RING_RADIUS, startLevel } from './levels';
+import { canThrust, FULL_PATH_SECONDS, type LevelRun, levelPoints, previewSeconds, RING_RADIUS, startLevel } from './levels';
 import { MAX_LEAD_STEPS, pressStartStep, releaseStep, TAP_STEPS } from './press-timing';
 import { type BlackHoleReplay, createBlackHoleReplay, type GameStepEvent } from './replay';
 import {
@@ -170,7 +170,7 @@ let predictor: Predictor;
 let replay: BlackHoleReplay;
 /**
  * Steps of the predicted path drawn ahead of the ship at most (in levels, as far as the level shows:
- * ./levels.ts `previewSeconds`, 3 s on levels 1 and 2, less later): 3 s, as long as the pad's. A wall of holes
+ * ./levels.ts `previewSeconds`, 3 s on level 1 and after repeated falls, less otherwise): 3 s, as long as the pad's. A wall of holes
  * (levels 2 and 3) pulls like a line of mass, harder than the thrust within some 6 m; a pilot that
  * flies up and steers by the path to keep it clear (scripts/black-hole-levels.mjs, reacting every
  * 0.3 s) falls in on level 2 nearly always seeing 1 s ahead, and often seeing 2 s. A 2 s path stops
@@ -1908,6 +1908,14 @@ const pathLabel = new Text({
 pathLabel.visible = false;
 app.stage.addChild(pathLabel);
 
+/**
+ * Seconds of predicted path drawn now: in levels the level's after the falls on it (../levels.ts
+ * `previewSeconds`: the full path on level 1 and after repeated falls, shorter otherwise), else the full path.
+ */
+function pathSeconds(): number {
+  return run ? previewSeconds(run.spec.level, Math.max(0, bh.falls - run.fallsAtStart)) : FULL_PATH_SECONDS;
+}
+
 /** Least gap between two dots of the predicted path drawn, px. */
 const PATH_DOT_GAP = 7;
 /**
@@ -1940,8 +1948,7 @@ function drawPathHint(color: number, fromPad: boolean): void {
   pathHintLeft.at = now;
   pathHint.visible = show;
   if (!show) return;
-  // As far ahead as the path is drawn: the level's (../levels.ts `previewSeconds`), 3 s outside levels.
-  const ahead = run ? previewSeconds(run.spec.level) : 3;
+  const ahead = pathSeconds();
   const text = pathReachesLine ? 'predicted path: reaches the line' : `predicted path, next ${ahead} s`;
   if (pathHint.text !== text) pathHint.text = text;
   if (pathHint.style.fill !== color) pathHint.style.fill = color;
@@ -2376,11 +2383,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     if (shell.paused) bh.thrust = pausedThrust;
     const fromPad = (run ? run.parked && canThrust(bh, run) : bh.parked) && bh.thrust === 'none';
     // In levels, as far ahead as the level shows (../levels.ts `previewSeconds`: less on later levels).
-    const steps = run
-      ? Math.min(PATH_STEPS, Math.round(previewSeconds(run.spec.level) / bh.world.dt))
-      : fromPad
-        ? PAD_PATH_STEPS
-        : PATH_STEPS;
+    const steps = run ? Math.min(PATH_STEPS, Math.round(pathSeconds() / bh.world.dt)) : fromPad ? PAD_PATH_STEPS : PATH_STEPS;
     if (fromPad) {
       // Only the path holding ↑: the paths of held diagonals are red on every layout (./levels.ts
       // `heldThrustClears` draws again where one clears), so drawn beside it they said nothing a
@@ -2402,7 +2405,10 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     pathKind = pathEnd(bh, path, pathPoints, steps);
     bh.lineOpen = true;
     pathReachesLine = false;
-    for (let i = 0; i < pathPoints && !pathReachesLine && lineOpen; i++) pathReachesLine = path[2 * i + 1]! >= bh.lineY;
+    // The blue verdict only where the full path shows (level 1, or as help after falls): on a short
+    // path it would turn blue just below the line, once the route is flown anyway.
+    const full = pathSeconds() >= FULL_PATH_SECONDS;
+    for (let i = 0; i < pathPoints && !pathReachesLine && lineOpen && full; i++) pathReachesLine = path[2 * i + 1]! >= bh.lineY;
     const warn = pathKind !== 'clear';
     const color = warn ? PATH_WARN : pathReachesLine ? PATH_CLEAR : PATH_OPEN;
     // Dots fade along the path but stay plain to the end (faded to nothing, a path seemed to stop short).
