@@ -68,7 +68,7 @@ import {
   predictPath,
   type Thrust,
 } from './rules';
-import { viewBeside } from './view';
+import { velocityTick, viewBeside } from './view';
 import { continueWords, nextHappening, pausedWords, type ShipHappening, touchStatusLines, waitWords } from './wait-words';
 
 const search = new URLSearchParams(location.search);
@@ -2500,6 +2500,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
       .fill({ color: 0xffb347, alpha: 0.9 });
   }
   drawEngineGauge(sx, sy, k, bh.over ? 0 : strength);
+  if (!bh.over) drawVelocityTick(sx, sy, k);
   // Dim while the ready beat after a respawn lasts (no press counts yet), bright once it will fly.
   drawShip(sx, sy, k, shipLean, bh.over ? 0x5c677d : readying() ? 0x7d889c : 0xe8ecf1);
   updateStatus();
@@ -2535,6 +2536,33 @@ function keepPanelOffField(): void {
 
 /** The engine's share of full thrust the gauge round the ship showed in the last frame (0: none drawn). */
 let gaugeShown = 0;
+/**
+ * Draws the velocity tick (./view.ts `velocityTick`): a short pale-blue arrow from the ship's edge
+ * along its velocity, longer the faster it flies, so the way it drifts shows with the path off (the
+ * ship's nose always points up: a stranger drifted left into a hole with the nose up).
+ */
+function drawVelocityTick(sx: number, sy: number, k: number): void {
+  const V = bh.world.components.Velocity,
+    s = slotOf(bh.ship);
+  const tick = velocityTick(V.x[s]!, V.y[s]!, k);
+  if (!tick) return;
+  const len = Math.hypot(tick[0], tick[1]),
+    ux = tick[0] / len,
+    uy = tick[1] / len;
+  const x0 = sx + ux * 0.7 * k,
+    y0 = sy + uy * 0.7 * k,
+    x1 = x0 + tick[0],
+    y1 = y0 + tick[1],
+    h = 0.3 * k;
+  overlay
+    .moveTo(x0, y0)
+    .lineTo(x1, y1)
+    .stroke({ width: Math.max(2, 0.12 * k), color: 0x9fd3ff, alpha: 0.85 });
+  overlay
+    .poly([x1 + ux * h, y1 + uy * h, x1 - uy * h * 0.6, y1 + ux * h * 0.6, x1 + uy * h * 0.6, y1 - ux * h * 0.6])
+    .fill({ color: 0x9fd3ff, alpha: 0.85 });
+}
+
 /**
  * The engine gauge round the ship at (sx, sy), px, k px tall: while it thrusts, a faint circle and an
  * arc over it from the top, clockwise, as far round as the engine's `strength` (0 to 1 of full
