@@ -1754,7 +1754,7 @@ let deathFit = '';
 /** The red flash over the field (above the holes and the ship, under the words). */
 const flashLayer = new Graphics({ label: 'death-flash' });
 app.stage.addChild(flashLayer);
-/** The words of a fall or a loss over the field: "Swallowed!" and the lives left, or "Lost in space!". */
+/** The words of a fall or a loss over the field: "Swallowed!" and the lives left, or "Off the field!". */
 const deathText = new Text({
   text: '',
   style: {
@@ -1806,8 +1806,11 @@ function setWaitWords(color = waitColor): void {
  * so, in pale blue (no flash, no shake: nothing was lost but the flight), until the player thrusts.
  */
 function showLost(): void {
+  lostAt = performance.now();
   if (run) setWaitWords(LOST_WORDS);
 }
+/** performance.now() of the last loss off the field, ms: its words show DEATH_TEXT_MS from then even if the player flies on at once. */
+let lostAt = -Infinity;
 
 /**
  * Whether the words of the last fall or loss stay up: after either, in levels, the new ship waits
@@ -1848,7 +1851,10 @@ function drawDeath(): void {
   const waits = deathWaits();
   // The ready beat's "Get ready…" becomes how to fly on when it ends.
   if (waits && waitReady !== readying()) setWaitWords();
-  const fresh = age >= 0 && age < DEATH_TEXT_MS && (happening === 'fell' || happening === 'over');
+  const lostAge = performance.now() - lostAt;
+  const fresh =
+    (age >= 0 && age < DEATH_TEXT_MS && (happening === 'fell' || happening === 'over')) ||
+    (run !== null && happening === 'lost' && lostAge >= 0 && lostAge < DEATH_TEXT_MS);
   // Not while the ship spirals in: the caption at the hole says it then (`drawSwallow`).
   deathText.visible = (fresh || waits) && !swallow.active;
   if (!deathText.visible) return;

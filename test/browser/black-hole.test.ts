@@ -592,7 +592,7 @@ describe('black hole, the ready moment', () => {
 });
 
 describe('black hole, the start pad', () => {
-  it('↓ held on the pad leaves the ship parked there: no "Lost in space", no reset, for 2.5 s of game time', async () => {
+  it('↓ held on the pad leaves the ship parked there: no "Off the field", no reset, for 2.5 s of game time', async () => {
     // A stranger's first key was ↓: the ship flew off the field's foot in under 1 s.
     type Bh = {
       reset(): void;
@@ -624,7 +624,7 @@ describe('black hole, the start pad', () => {
       };
     });
     await p.page.keyboard.up('ArrowDown');
-    expect(after.message).not.toMatch(/Lost in space/);
+    expect(after.message).not.toMatch(/Off the field/);
     expect([after.resets, after.parked, after.dy]).toEqual([before.resets, true, 0]);
     expect(p.errors).toEqual([]);
     await p.close();
@@ -1507,7 +1507,7 @@ describe('black hole, a phone played with keys', () => {
 describe('black hole on a phone (390 x 844, touch)', () => {
   it("one thumb on the seam of ← and ↑ until the ship flies left at 4.5 m/s, then slid onto ↑: the narrow field's gentler sideways thrust and soft side wall keep the ship in the field", async () => {
     // Played on the phone's 20 x 30 m field: flown on with ↑ alone from there, at full sideways thrust
-    // and without the soft side walls it left the field ("Lost in space") on every layout of level 1,
+    // and without the soft side walls it left the field ("Off the field") on every layout of level 1,
     // seeds 1 to 8 (games/black-hole/rules.ts SOFT_WALL and `sideScale`).
     type PhoneBh = { bh: { thrust: string; message: string; falls: number }; level: { waiting: boolean }; ship(): number[] };
     const p = await h.openGame('black-hole', { viewport: { width: 390, height: 844 }, touch: true, query: { level: 1 } });
