@@ -456,17 +456,17 @@ const panel = createPanel(
     {
       type: 'slider',
       key: 'gScale',
-      label: 'G scale (× 1 m³/kg/s²)',
+      label: 'Gravity strength',
       min: 0.1,
       max: 5,
       step: 0.01,
       onChange: (s) => replay.input('gScale', s),
     },
-    { type: 'slider', key: 'c', label: 'light speed c (m/s)', min: 4, max: 30, step: 0.1, onChange: (c) => replay.input('lightSpeed', c) },
+    { type: 'slider', key: 'c', label: 'Speed limit (light)', min: 4, max: 30, step: 0.1, onChange: (c) => replay.input('lightSpeed', c) },
     {
       type: 'slider',
       key: 'thrust',
-      label: 'thrust (m/s²)',
+      label: 'Engine power',
       min: 0,
       max: 20,
       step: 0.1,
@@ -477,6 +477,13 @@ const panel = createPanel(
   ],
   { title: 'Black hole' },
 );
+/** The units of the panel's physics knobs, on hover (their labels say in a player's words what they change). */
+const PANEL_UNITS: Readonly<Record<string, string>> = {
+  gScale: 'G scale, × 1 m³/kg/s²: how hard the holes pull',
+  c: 'light speed c, m/s: no ship flies faster; the lower it is, the wider each horizon',
+  thrust: "thrust, m/s²: the engine's push",
+};
+for (const [key, units] of Object.entries(PANEL_UNITS)) panel.controller(key as keyof typeof params).domElement.title = units;
 
 // ---- Input: arrow keys and touch buttons; two at right angles thrust diagonally ------------------
 
