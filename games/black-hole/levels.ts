@@ -396,17 +396,26 @@ export function levelSpec(level: number): LevelSpec {
   }
 }
 
+/** Falls into holes on one level after which the page draws the full path again, as help. */
+export const PATH_HELP_FALLS = 3;
+
+/** Seconds of the full predicted path: the one drawn on level 1 and as help (`previewSeconds`). */
+export const FULL_PATH_SECONDS = 3;
+
 /**
- * How far ahead the page draws the predicted path on level `level` (integer >= 1), s: 3 s on levels 1
- * and 2 (practice, and the wall, whose pull a newcomer learns from the path bending into it), 2 s on
- * level 3, 1.5 s on levels 4 and 5, 1 s from level 6. The dots then show where the next moment takes
- * the ship, not the whole way round the holes: a player who follows them still has to plan the route
- * (the strangers who played the 3 s path on every level said the dots did the thinking).
- * @throws RangeError unless level is an integer >= 1.
+ * How far ahead the page draws the predicted path on level `level` (integer >= 1) after `falls`
+ * falls into holes on it (integer >= 0, default 0), s: the full FULL_PATH_SECONDS on level 1 (practice)
+ * and, as help, on any level after PATH_HELP_FALLS falls on it; else 1.5 s on levels 2 to 5 and 1 s
+ * from level 6. The short path shows where the next moment takes the ship, not the whole way round
+ * the holes, so a player who follows it still plans the route (a stranger who had the 3 s path on
+ * levels 1 to 4 nudged until the dots turned blue and let go: the dots did the thinking).
+ * @throws RangeError unless level is an integer >= 1 and falls an integer >= 0.
  */
-export function previewSeconds(level: number): number {
+export function previewSeconds(level: number, falls = 0): number {
   if (!(Number.isInteger(level) && level >= 1)) throw new RangeError(`previewSeconds: level must be an integer >= 1, got ${level}`);
-  return level <= 2 ? 3 : level === 3 ? 2 : level <= 5 ? 1.5 : 1;
+  if (!(Number.isInteger(falls) && falls >= 0)) throw new RangeError(`previewSeconds: falls must be an integer >= 0, got ${falls}`);
+  if (level === 1 || falls >= PATH_HELP_FALLS) return FULL_PATH_SECONDS;
+  return level <= 5 ? 1.5 : 1;
 }
 
 /** How a cleared level went (shown at the end of the level). */

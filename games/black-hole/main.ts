@@ -26,7 +26,7 @@
  *
  * Drawn: nebulae behind the stars; each hole as a black disc of its Schwarzschild radius with a
  * photon ring, an orange glow and a tilted disc of hot gas whose clumps go round it; the exhaust
- * (particles, additive); the ship with a flame opposite its thrust; its predicted path for the next 3 s (less on later levels: ./levels.ts `previewSeconds`; after a tap, with the
+ * (particles, additive); the ship with a flame opposite its thrust; its predicted path for the next 3 s on level 1 (the next 1-1.5 s from level 2, the full 3 s again after repeated falls: ./levels.ts `previewSeconds`; after a tap, with the
  * thrust ending where the tap's does), integrated in a small second world
  * (rules.ts `predictPath`) and drawn as fading dots, red where it falls into a hole (a ring) or leaves the
  * field (a cross at the edge: the ship would be lost), blue where it reaches the finish line, grey where it runs on mid-field, undecided (on the pad, before the first thrust, the path holding ↑ would take, 3 s of it).
@@ -50,7 +50,7 @@ import {
 import { createPauseOverlay, startPixiGame } from '@bitphysics/game-kit/pixi';
 import { type PhysicsWorld, Rng, slotOf, stateHash } from '@bitphysics/physics';
 import { Container, Graphics, Sprite, Text, Texture } from 'pixi.js';
-import { canThrust, type LevelRun, levelPoints, previewSeconds, RING_RADIUS, startLevel } from './levels';
+import { canThrust, FULL_PATH_SECONDS, type LevelRun, levelPoints, previewSeconds, RING_RADIUS, startLevel } from './levels';
 import { MAX_LEAD_STEPS, pressStartStep, releaseStep, TAP_STEPS } from './press-timing';
 import { type BlackHoleReplay, createBlackHoleReplay, type GameStepEvent } from './replay';
 import {
@@ -68,7 +68,7 @@ import {
   predictPath,
   type Thrust,
 } from './rules';
-import { viewBeside } from './view';
+import { velocityTick, viewBeside } from './view';
 import { continueWords, nextHappening, pausedWords, type ShipHappening, touchStatusLines, waitWords } from './wait-words';
 
 const search = new URLSearchParams(location.search);
@@ -170,7 +170,7 @@ let predictor: Predictor;
 let replay: BlackHoleReplay;
 /**
  * Steps of the predicted path drawn ahead of the ship at most (in levels, as far as the level shows:
- * ./levels.ts `previewSeconds`, 3 s on levels 1 and 2, less later): 3 s, as long as the pad's. A wall of holes
+ * ./levels.ts `previewSeconds`, 3 s on level 1 and after repeated falls, less otherwise): 3 s, as long as the pad's. A wall of holes
  * (levels 2 and 3) pulls like a line of mass, harder than the thrust within some 6 m; a pilot that
  * flies up and steers by the path to keep it clear (scripts/black-hole-levels.mjs, reacting every
  * 0.3 s) falls in on level 2 nearly always seeing 1 s ahead, and often seeing 2 s. A 2 s path stops
@@ -456,17 +456,17 @@ const panel = createPanel(
     {
       type: 'slider',
       key: 'gScale',
-      label: 'G scale (× 1 m³/kg/s²)',
+      label: 'Gravity strength',
       min: 0.1,
       max: 5,
       step: 0.01,
       onChange: (s) => replay.input('gScale', s),
     },
-    { type: 'slider', key: 'c', label: 'light speed c (m/s)', min: 4, max: 30, step: 0.1, onChange: (c) => replay.input('lightSpeed', c) },
+    { type: 'slider', key: 'c', label: 'Speed limit (light)', min: 4, max: 30, step: 0.1, onChange: (c) => replay.input('lightSpeed', c) },
     {
       type: 'slider',
       key: 'thrust',
-      label: 'thrust (m/s²)',
+      label: 'Engine power',
       min: 0,
       max: 20,
       step: 0.1,
@@ -477,6 +477,13 @@ const panel = createPanel(
   ],
   { title: 'Black hole' },
 );
+/** The units of the panel's physics knobs, on hover (their labels say in a player's words what they change). */
+const PANEL_UNITS: Readonly<Record<string, string>> = {
+  gScale: 'G scale, × 1 m³/kg/s²: how hard the holes pull',
+  c: 'light speed c, m/s: no ship flies faster; the lower it is, the wider each horizon',
+  thrust: "thrust, m/s²: the engine's push",
+};
+for (const [key, units] of Object.entries(PANEL_UNITS)) panel.controller(key as keyof typeof params).domElement.title = units;
 
 // ---- Input: arrow keys and touch buttons; two at right angles thrust diagonally ------------------
 
@@ -1754,7 +1761,7 @@ let deathFit = '';
 /** The red flash over the field (above the holes and the ship, under the words). */
 const flashLayer = new Graphics({ label: 'death-flash' });
 app.stage.addChild(flashLayer);
-/** The words of a fall or a loss over the field: "Swallowed!" and the lives left, or "Lost in space!". */
+/** The words of a fall or a loss over the field: "Swallowed!" and the lives left, or "Off the field!". */
 const deathText = new Text({
   text: '',
   style: {
@@ -1806,8 +1813,11 @@ function setWaitWords(color = waitColor): void {
  * so, in pale blue (no flash, no shake: nothing was lost but the flight), until the player thrusts.
  */
 function showLost(): void {
+  lostAt = performance.now();
   if (run) setWaitWords(LOST_WORDS);
 }
+/** performance.now() of the last loss off the field, ms: its words show DEATH_TEXT_MS from then even if the player flies on at once. */
+let lostAt = -Infinity;
 
 /**
  * Whether the words of the last fall or loss stay up: after either, in levels, the new ship waits
@@ -1848,7 +1858,10 @@ function drawDeath(): void {
   const waits = deathWaits();
   // The ready beat's "Get ready…" becomes how to fly on when it ends.
   if (waits && waitReady !== readying()) setWaitWords();
-  const fresh = age >= 0 && age < DEATH_TEXT_MS && (happening === 'fell' || happening === 'over');
+  const lostAge = performance.now() - lostAt;
+  const fresh =
+    (age >= 0 && age < DEATH_TEXT_MS && (happening === 'fell' || happening === 'over')) ||
+    (run !== null && happening === 'lost' && lostAge >= 0 && lostAge < DEATH_TEXT_MS);
   // Not while the ship spirals in: the caption at the hole says it then (`drawSwallow`).
   deathText.visible = (fresh || waits) && !swallow.active;
   if (!deathText.visible) return;
@@ -1908,6 +1921,14 @@ const pathLabel = new Text({
 pathLabel.visible = false;
 app.stage.addChild(pathLabel);
 
+/**
+ * Seconds of predicted path drawn now: in levels the level's after the falls on it (../levels.ts
+ * `previewSeconds`: the full path on level 1 and after repeated falls, shorter otherwise), else the full path.
+ */
+function pathSeconds(): number {
+  return run ? previewSeconds(run.spec.level, Math.max(0, bh.falls - run.fallsAtStart)) : FULL_PATH_SECONDS;
+}
+
 /** Least gap between two dots of the predicted path drawn, px. */
 const PATH_DOT_GAP = 7;
 /**
@@ -1940,8 +1961,7 @@ function drawPathHint(color: number, fromPad: boolean): void {
   pathHintLeft.at = now;
   pathHint.visible = show;
   if (!show) return;
-  // As far ahead as the path is drawn: the level's (../levels.ts `previewSeconds`), 3 s outside levels.
-  const ahead = run ? previewSeconds(run.spec.level) : 3;
+  const ahead = pathSeconds();
   const text = pathReachesLine ? 'predicted path: reaches the line' : `predicted path, next ${ahead} s`;
   if (pathHint.text !== text) pathHint.text = text;
   if (pathHint.style.fill !== color) pathHint.style.fill = color;
@@ -2376,11 +2396,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     if (shell.paused) bh.thrust = pausedThrust;
     const fromPad = (run ? run.parked && canThrust(bh, run) : bh.parked) && bh.thrust === 'none';
     // In levels, as far ahead as the level shows (../levels.ts `previewSeconds`: less on later levels).
-    const steps = run
-      ? Math.min(PATH_STEPS, Math.round(previewSeconds(run.spec.level) / bh.world.dt))
-      : fromPad
-        ? PAD_PATH_STEPS
-        : PATH_STEPS;
+    const steps = run ? Math.min(PATH_STEPS, Math.round(pathSeconds() / bh.world.dt)) : fromPad ? PAD_PATH_STEPS : PATH_STEPS;
     if (fromPad) {
       // Only the path holding ↑: the paths of held diagonals are red on every layout (./levels.ts
       // `heldThrustClears` draws again where one clears), so drawn beside it they said nothing a
@@ -2402,7 +2418,10 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
     pathKind = pathEnd(bh, path, pathPoints, steps);
     bh.lineOpen = true;
     pathReachesLine = false;
-    for (let i = 0; i < pathPoints && !pathReachesLine && lineOpen; i++) pathReachesLine = path[2 * i + 1]! >= bh.lineY;
+    // The blue verdict only where the full path shows (level 1, or as help after falls): on a short
+    // path it would turn blue just below the line, once the route is flown anyway.
+    const full = pathSeconds() >= FULL_PATH_SECONDS;
+    for (let i = 0; i < pathPoints && !pathReachesLine && lineOpen && full; i++) pathReachesLine = path[2 * i + 1]! >= bh.lineY;
     const warn = pathKind !== 'clear';
     const color = warn ? PATH_WARN : pathReachesLine ? PATH_CLEAR : PATH_OPEN;
     // Dots fade along the path but stay plain to the end (faded to nothing, a path seemed to stop short).
@@ -2494,6 +2513,7 @@ function drawFrame(alpha: number, world: PhysicsWorld): void {
       .fill({ color: 0xffb347, alpha: 0.9 });
   }
   drawEngineGauge(sx, sy, k, bh.over ? 0 : strength);
+  if (!bh.over) drawVelocityTick(sx, sy, k);
   // Dim while the ready beat after a respawn lasts (no press counts yet), bright once it will fly.
   drawShip(sx, sy, k, shipLean, bh.over ? 0x5c677d : readying() ? 0x7d889c : 0xe8ecf1);
   updateStatus();
@@ -2529,6 +2549,33 @@ function keepPanelOffField(): void {
 
 /** The engine's share of full thrust the gauge round the ship showed in the last frame (0: none drawn). */
 let gaugeShown = 0;
+/**
+ * Draws the velocity tick (./view.ts `velocityTick`): a short pale-blue arrow from the ship's edge
+ * along its velocity, longer the faster it flies, so the way it drifts shows with the path off (the
+ * ship's nose always points up: a stranger drifted left into a hole with the nose up).
+ */
+function drawVelocityTick(sx: number, sy: number, k: number): void {
+  const V = bh.world.components.Velocity,
+    s = slotOf(bh.ship);
+  const tick = velocityTick(V.x[s]!, V.y[s]!, k);
+  if (!tick) return;
+  const len = Math.hypot(tick[0], tick[1]),
+    ux = tick[0] / len,
+    uy = tick[1] / len;
+  const x0 = sx + ux * 0.7 * k,
+    y0 = sy + uy * 0.7 * k,
+    x1 = x0 + tick[0],
+    y1 = y0 + tick[1],
+    h = 0.3 * k;
+  overlay
+    .moveTo(x0, y0)
+    .lineTo(x1, y1)
+    .stroke({ width: Math.max(2, 0.12 * k), color: 0x9fd3ff, alpha: 0.85 });
+  overlay
+    .poly([x1 + ux * h, y1 + uy * h, x1 - uy * h * 0.6, y1 + ux * h * 0.6, x1 + uy * h * 0.6, y1 - ux * h * 0.6])
+    .fill({ color: 0x9fd3ff, alpha: 0.85 });
+}
+
 /**
  * The engine gauge round the ship at (sx, sy), px, k px tall: while it thrusts, a faint circle and an
  * arc over it from the top, clockwise, as far round as the engine's `strength` (0 to 1 of full

@@ -844,7 +844,7 @@ export function stepBlackHole(game: BlackHoleGame): BlackHoleEvent {
   }
   if (x < 0 || x > game.field.width || y < 0 || y > game.field.height) {
     resetShip(game);
-    game.message = 'Lost in space: back to the start (no penalty).';
+    game.message = 'Off the field: back to the start (no penalty).';
     return 'lost';
   }
   return 'none';
@@ -1092,7 +1092,7 @@ export type PathEnd = 'clear' | 'falls' | 'lost';
  * How the predicted path of `n` points in `out` (x0, y0, x1, y1, ... m, as `predictPath` writes them,
  * asked for `steps` steps) ends: 'falls' when it stops short inside the field (on a horizon);
  * 'lost' when it leaves the field (x < 0, x > width or y < 0, or above the field) before reaching
- * the finish line (or at all while the line is closed: `BlackHoleGame.lineOpen`), where the game would put the ship back at the start ("Lost in space");
+ * the finish line (or at all while the line is closed: `BlackHoleGame.lineOpen`), where the game would put the ship back at the start ("Off the field");
  * 'clear' otherwise (it runs its full length, or reaches the line first).
  * @throws RangeError unless n is an integer in [1, out.length / 2] and steps an integer >= 1.
  */

@@ -68,3 +68,20 @@ export function viewBeside(
   }
   return hi;
 }
+
+/** Speeds under this, m/s, draw no velocity tick (the ship parked or hanging still). */
+export const TICK_MIN_SPEED = 0.3;
+
+/**
+ * The velocity tick drawn from the ship (DOM-free): the screen vector, px (x right, y down), of a
+ * short arrow along the ship's velocity (vx, vy), m/s (y up), for a ship drawn `k` px tall. It grows
+ * with speed, from 0.8 k at TICK_MIN_SPEED to 2.4 k at 10 m/s and over, so its length reads as speed
+ * and its direction as the way the ship drifts (the ship's nose always points up); null under
+ * TICK_MIN_SPEED or for a non-finite velocity.
+ */
+export function velocityTick(vx: number, vy: number, k: number): [number, number] | null {
+  const speed = Math.hypot(vx, vy);
+  if (!(Number.isFinite(speed) && speed >= TICK_MIN_SPEED && k > 0)) return null;
+  const len = k * (0.8 + 1.6 * Math.min(1, (speed - TICK_MIN_SPEED) / (10 - TICK_MIN_SPEED)));
+  return [(len * vx) / speed, (-len * vy) / speed];
+}

@@ -3,7 +3,7 @@
  * and only that. The page keeps the last thing that happened to the ship (`ShipHappening`); a fall's
  * words must not outlive the fall: after a level begins (a clear, or a new game) or after the ship is
  * lost off the field, the fall before is history, and words left from it contradicted the status line
- * ("Swallowed! 2 lives left" over "Lost in space: back to the start").
+ * ("Swallowed! 2 lives left" over "Off the field: back to the start").
  */
 
 /**
@@ -37,7 +37,7 @@ export const READY_LINE = 'Get ready…';
 
 /**
  * The words for `happening`, lines separated by '\n': a fall's ("Swallowed!", the lives left or the
- * practice note, how to go on, or READY_LINE while the ready beat lasts), a loss off the field's ("Lost in space", or "Missed the ring" past the
+ * practice note, how to go on, or READY_LINE while the ready beat lasts), a loss off the field's ("Off the field", or "Missed the ring" past the
  * line with a ring left; "Caught in orbit", "Caught among the holes" or "Out of fuel" for an attempt
  * ended stranded; no life lost; how to go on), a
  * game over's; '' when there is nothing to say ('level', 'flying').
@@ -62,7 +62,7 @@ export function waitWords(happening: ShipHappening, ctx: WaitContext): string {
       if (ctx.stranded === 'fuel') return `Out of fuel!\nBack to the start, tank full, no life lost\n${go}`;
       return ctx.missedRing === true
         ? `Missed the ring!\nThe line counts after it: back to the start, no life lost\n${go}`
-        : `Lost in space!\nBack to the start, no life lost\n${go}`;
+        : `Off the field!\nBack to the start, no life lost\n${go}`;
     default:
       return '';
   }

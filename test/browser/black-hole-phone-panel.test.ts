@@ -1,5 +1,5 @@
 /**
- * Black hole on a phone (390 x 844, touch). Level 3's predicted path runs 2 s ahead
+ * Black hole on a phone (390 x 844, touch). Level 3's predicted path runs 1.5 s ahead
  * (games/black-hole/levels.ts `previewSeconds`), and its words say so. After the last life the Continue panel (the game-over card
  * and its button) covers none of the holes left on the field. The issue this answers: on level 3's
  * zig-zag the holes reach every height between the finish line and the start pad of the phone's tall
@@ -48,9 +48,9 @@ describe('black hole on a phone, the path and the continue panel', () => {
       const w = window.game as unknown as Path;
       return !w.padPath() && w.pathHint() !== '' ? { hint: w.pathHint(), points: w.pathPoints(), dt: w.bh.world.dt } : null;
     }, null);
-    expect(seen.hint).toBe('predicted path, next 2 s');
-    // 2 s of steps and the ship's own point, at most (it stops short where it falls in or leaves).
-    expect(seen.points).toBeLessThanOrEqual(Math.round(2 / seen.dt) + 1);
+    expect(seen.hint).toBe('predicted path, next 1.5 s');
+    // 1.5 s of steps and the ship's own point, at most (it stops short where it falls in or leaves).
+    expect(seen.points).toBeLessThanOrEqual(Math.round(1.5 / seen.dt) + 1);
   });
 
   it("after the last life on level 3 the panel covers no hole: nor the card, nor the button, 1.5 radii round each (the hole's disc)", async () => {

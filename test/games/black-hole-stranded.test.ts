@@ -69,7 +69,7 @@ describe('black hole: an attempt that cannot end by itself is ended', () => {
     expect(t).toBeLessThan(2 * ORBIT_TURNS + 0.1);
     expect([g.lives, run.stranded, run.parked, run.missedRing]).toEqual([lives, 'orbit', true, false]);
     expect(g.message).toMatch(/orbit/);
-    // The words over the field while the ship waits say why, not "Lost in space".
+    // The words over the field while the ship waits say why, not "Off the field".
     expect(waitWords('lost', { lives, practice: false, touch: true, stranded: run.stranded })).toBe(
       'Caught in orbit!\nBack to the start, no life lost\nTap ↑, ← or → to fly on',
     );

@@ -84,7 +84,7 @@ describe('black hole wait words', () => {
     setVelocity(g.world, g.ship, [-2, 0]);
     last = nextHappening(last, (e = stepLevel(g, run)));
     expect(e).toBe('lost');
-    expect(words()).toBe('Lost in space!\nBack to the start, no life lost\nPress ↑, ← or → to fly on');
+    expect(words()).toBe('Off the field!\nBack to the start, no life lost\nPress ↑, ← or → to fly on');
     // A fall on level 2 costs a life, and says how many are left.
     run.parked = false;
     setThrust(g, 'up');
@@ -94,7 +94,7 @@ describe('black hole wait words', () => {
     expect(words()).toBe('Swallowed!\n2 lives left\nPress ↑, ← or → to fly on');
   });
 
-  test('past the line with the ring left: the words say the ring was missed, not only "Lost in space"', () => {
+  test('past the line with the ring left: the words say the ring was missed, not only "Off the field"', () => {
     const g = createBlackHoleGame({ seed: 3 });
     const run = startLevel(g, 1);
     expect(run.rings.length).toBe(1);
@@ -111,7 +111,7 @@ describe('black hole wait words', () => {
     const words = waitWords(last, { lives: g.lives, practice: run.spec.practice, touch: false, missedRing: run.missedRing });
     expect(words).toBe('Missed the ring!\nThe line counts after it: back to the start, no life lost\nPress ↑, ← or → to fly on');
     expect(g.message).toMatch(/^Missed the ring/);
-    // Off a side edge, the ring still left: plain "Lost in space".
+    // Off a side edge, the ring still left: plain "Off the field".
     run.parked = false;
     setPosition(g.world, g.ship, [0.01, 3]);
     setVelocity(g.world, g.ship, [-2, 0]);
@@ -119,7 +119,7 @@ describe('black hole wait words', () => {
     for (let k = 0; k < 600 && e !== 'lost'; k++) last = nextHappening(last, (e = stepLevel(g, run)));
     expect(e).toBe('lost');
     expect(run.missedRing).toBe(false);
-    expect(waitWords(last, { lives: g.lives, practice: false, touch: true, missedRing: run.missedRing })).toMatch(/^Lost in space!/);
+    expect(waitWords(last, { lives: g.lives, practice: false, touch: true, missedRing: run.missedRing })).toMatch(/^Off the field!/);
   });
 
   test('paused, the last line says how to resume (one message, not two stacked)', () => {
