@@ -1509,8 +1509,6 @@ canvas.addEventListener('pointerup', (event) => {
   if (event.pointerId !== downId) return;
   downId = -1;
   if (app.controls) app.controls.enabled = true;
-  // A tap or click in the room while paused pushes nothing (it would act on resume).
-  if (shell.paused && params.mode === 'room') return;
   const moved = Math.hypot(event.clientX - downX, event.clientY - downY);
   if (event.pointerType !== 'mouse' && params.mode === 'room') {
     const does = touchPress(downOnCube, moved);
