@@ -123,7 +123,6 @@ import {
   type WreckingBallHandles,
   wreckingBallWorldOptions,
 } from './scene';
-import { capDistance, WIDEN_MAX } from './zoom-cap';
 
 /** Whether the page is taller than wide (a phone held upright): the camera frames a nearer view. */
 const PORTRAIT = window.innerHeight > window.innerWidth;
@@ -721,7 +720,6 @@ function applyView(view: FittedView): void {
   }
   framedSize = [app.canvas.clientWidth, app.canvas.clientHeight];
   home = { position: cam.position.clone(), target, direction: view.position.clone().sub(view.lookAt).normalize() };
-  homeDistance = cam.position.distanceTo(target);
   settleCamera();
 }
 /** Nearest and farthest zoom, as shares of the framing's distance from its orbit target (see zoomRange). */
@@ -757,8 +755,6 @@ function orbitTarget(view: FittedView): Vector3 {
  * and the unit direction toward the camera (null once the player moves the camera).
  */
 let home: { position: Vector3; target: Vector3; direction: Vector3 } | null = null;
-/** The site's framing distance, m, from its orbit target (applyView): a widened framing keeps within WIDEN_MAX times it. */
-let homeDistance = 0;
 /** The framing the camera eases toward while the site's framing is kept (see followAction): where it stands and looks. */
 const cameraGoal = { position: new Vector3(), target: new Vector3() };
 /** The camera's and its orbit target's velocities, m/s, in the spring (`smoothDamp`). */
@@ -767,10 +763,9 @@ const cameraVelocity = new Vector3(),
 /**
  * The widened framing: whether the camera is given it rather than the site's (for the rest of the
  * level once it is), the ball's places it takes in (m), when it was last widened (camera seconds, see cameraNow) and
- * how many times it widened for a piece knocked off the screen (`lostPiece`); `capped` once it
- * reached WIDEN_MAX times the site's framing distance (it widens no more for the level).
+ * how many times it widened for a piece knocked off the screen (`lostPiece`).
  */
-const widen = { on: false, balls: [] as Vector3[], at: -1e9, wreckage: 0, capped: false };
+const widen = { on: false, balls: [] as Vector3[], at: -1e9, wreckage: 0 };
 // The player's own turn or zoom: the camera is theirs (no new framing on a resize, no easing back).
 app.controls?.addEventListener('start', () => {
   framedSize = null;
@@ -878,12 +873,6 @@ function latticeTexture(repeatAlong: number, alongX: boolean): CanvasTexture {
 const JIB_LENGTH = RADIUS_RANGE[1] + 4;
 /** How far the jib reaches out from the mast, m (it reaches 2 m back). */
 const JIB_LENGTH_OUT = JIB_LENGTH - 2;
-/**
- * How much the crane's lattice (jib and mast) glows in its own yellow: its faces turned from the sun
- * stay the mast's yellow rather than going olive, so the jib seen from below reads as the same steel
- * as the mast, one crane (unlit, the jib's underside drew dark and read as a second crane).
- */
-const CRANE_GLOW = 0.45;
 const jibMaterial = new MeshStandardMaterial({
   color: COLORS.mast,
   roughness: 0.6,
@@ -892,12 +881,9 @@ const jibMaterial = new MeshStandardMaterial({
   alphaTest: 0.5,
   transparent: false,
   side: DoubleSide,
-  emissive: COLORS.mast,
-  emissiveIntensity: CRANE_GLOW,
 });
 // Alpha from the texture's own brightness: the lattice's bars opaque, the panels clear.
 jibMaterial.alphaMap = jibMaterial.map;
-jibMaterial.emissiveMap = jibMaterial.map;
 const jib = new Mesh<BoxGeometry, Material>(new BoxGeometry(JIB_LENGTH, 0.55, 0.55), jibMaterial);
 jib.castShadow = true;
 app.scene.add(jib);
@@ -974,12 +960,9 @@ const mastLattice = new Mesh(
     map: latticeTexture(JIB_HEIGHT / 0.82, false),
     alphaTest: 0.5,
     side: DoubleSide,
-    emissive: COLORS.mast,
-    emissiveIntensity: CRANE_GLOW,
   }),
 );
 (mastLattice.material as MeshStandardMaterial).alphaMap = (mastLattice.material as MeshStandardMaterial).map;
-(mastLattice.material as MeshStandardMaterial).emissiveMap = (mastLattice.material as MeshStandardMaterial).map;
 mastLattice.position.set(0, JIB_HEIGHT / 2, 0);
 mastLattice.castShadow = true;
 app.scene.add(mastLattice);
@@ -1260,7 +1243,6 @@ function settleCamera(): void {
   widen.on = false;
   widen.balls.length = 0;
   widen.wreckage = 0;
-  widen.capped = false;
   if (home !== null) {
     cameraGoal.position.copy(home.position);
     cameraGoal.target.copy(home.target);
@@ -1319,9 +1301,7 @@ function rehome(ball: ArrayLike<number>): void {
   rehomedAt[2] = ball[2]!;
   pushBall(framePoints, ball[0]!, ball[1]!, ball[2]!);
   const fit = fitPoints(framePoints, home.direction);
-  const target = orbitTarget(fit);
-  capDistance(fit.position, target, WIDEN_MAX * homeDistance);
-  home = { position: fit.position, target, direction: home.direction };
+  home = { position: fit.position, target: orbitTarget(fit), direction: home.direction };
 }
 /** Widens the framing the camera is given to take in the ball at `ball` (m) too (see followAction). */
 function widenFor(ball: ArrayLike<number>, now: number): void {
@@ -1333,8 +1313,6 @@ function widenFor(ball: ArrayLike<number>, now: number): void {
   const fit = fitPoints(pts, home.direction);
   cameraGoal.position.copy(fit.position);
   cameraGoal.target.copy(orbitTarget(fit));
-  // No farther back than WIDEN_MAX times the site's framing: the structures stay readable.
-  widen.capped = capDistance(cameraGoal.position, cameraGoal.target, WIDEN_MAX * homeDistance);
   // The widened framing is inside the zoom range the player's pinch keeps to.
   const far = cameraGoal.position.distanceTo(cameraGoal.target);
   if (app.controls !== null && far > app.controls.maxDistance) app.controls.maxDistance = far * 1.05;
@@ -1392,12 +1370,7 @@ function followAction(): void {
     if (widen.on) {
       // The widened framing stays for the level (it only grows), so the targets hold still on the
       // screen between swings.
-      if (
-        !inside &&
-        !widen.capped &&
-        now - widen.at > WIDEN_EVERY &&
-        !ballInFraming(followBall, cameraGoal.position, cameraGoal.target, true)
-      )
+      if (!inside && now - widen.at > WIDEN_EVERY && !ballInFraming(followBall, cameraGoal.position, cameraGoal.target, true))
         widenFor(followBall, now);
     } else if (!inside) {
       widen.on = true;
@@ -1406,7 +1379,6 @@ function followAction(): void {
     // A piece knocked off the screen: the framing widens to take in where it lies (the player sees
     // what the swing did; wreckage flying out of the view looked to vanish).
     if (
-      !widen.capped &&
       now - widen.at > WIDEN_EVERY &&
       lostPiece(widen.on ? cameraGoal.position : app.camera.position, widen.on ? cameraGoal.target : controls.target)
     ) {
@@ -2639,10 +2611,10 @@ const panel = createPanel(
 const status = document.createElement('div');
 status.className = 'bp-hud';
 status.dataset.hud = 'wrecking-ball';
-// One line at any width (its text is kept short: statusTail; a longer one ends in an ellipsis), so
-// the line never wraps and moves the stage under the player's pointer.
-status.style.cssText =
-  'position: static; padding: 4px 8px; min-height: 1lh; white-space: nowrap; overflow: hidden; text-overflow: ellipsis';
+// As tall as its longest text (three lines on an upright phone, two on a desktop: a swing winding up
+// with its steadying tip wraps there) whatever it says now, so a longer line does not move the
+// stage under the player's pointer (a stranger's aim jumped 19 px when the line wrapped).
+status.style.cssText = `position: static; padding: 4px 8px; min-height: ${PORTRAIT ? 3 : 2}lh`;
 pageLayout().status.append(status);
 // The side column's numbers: the score for a player; with the debug layer (G, ?debug) also the
 // step time and the kit's frame rate, body and step counts.
@@ -3083,10 +3055,12 @@ function frame(): void {
     const used = swingsUsed(),
       left = budget - used;
     status.textContent = cleared
-      ? `Level ${handles.level} cleared ${'★'.repeat(clearedWith.stars)}${'☆'.repeat(3 - clearedWith.stars)} · score ${banked + levelScore} · ${touch ? 'tap' : 'press L or'} Level ${handles.level + 1} ▶`
+      ? `${clearedLine()} · final score ${banked + levelScore} · ${touch ? 'tap' : 'press L or'} Level ${handles.level + 1} ▶`
       : reachedAt >= 0
-        ? `Level ${handles.level} · target reached! · down ${f}/${n} · score ${banked + levelScore}${falling > 0 ? ` · ${falling} moving` : ''}`
-        : `Level ${handles.level}${scoreOnStatus()} · swings left ${left}/${budget} · down ${f}/${clearTarget(handles.pieces, handles.level)}${statusTail(left)}`;
+        ? `Level ${handles.level} · target reached! · down ${f}/${n} · score ${banked + levelScore} (counting the fall${falling > 0 ? `: ${falling} still moving` : ''})`
+        : `Level ${handles.level}${scoreOnStatus()} · swings left ${left}/${budget} (★★★ in ${swingPar(handles.level)}) · down ${f}/${n} (clear at ${clearTarget(handles.pieces, handles.level)})${swingPhase()}${
+            swing.result && shell.world.time - swing.resultAt < RESULT_SHOWN ? ` · ${swing.result}` : ''
+          }${left <= 0 && handles.controls.moves.length === 0 ? ` · out of swings: ${touch ? 'tap ↻' : 'press R'} to retry` : ''}${swayHint()}`;
     showNext(cleared, `Level ${handles.level + 1} ▶`);
     const text = hintText();
     showHint(text, cleared);
@@ -3105,25 +3079,11 @@ function frame(): void {
 }
 
 /**
- * The score on the status line (' · N pts') on a small screen, where the side column that shows it
+ * The score on the status line (' · score N') on a small screen, where the side column that shows it
  * (`readout`) is in the ☰ drawer; '' on a large one, where that column is in sight.
  */
 function scoreOnStatus(): string {
-  return pageLayout().compact() ? ` · ${banked + levelScore} pts` : '';
-}
-
-/**
- * The one thing the status line says after the level's numbers (' · ...', or ''), so the line stays
- * one line on a phone: what the crane is doing for a swing, else the last swing's result for
- * RESULT_SHOWN s, else that the swings are used up, else how to steady a swaying ball. `left` is the
- * swings left.
- */
-function statusTail(left: number): string {
-  const phase = swingPhase();
-  if (phase) return phase;
-  if (swing.result && shell.world.time - swing.resultAt < RESULT_SHOWN) return ` · ${swing.result}`;
-  if (left <= 0 && handles.controls.moves.length === 0) return ` · out of swings: ${touch ? 'tap ↻' : 'press R'}`;
-  return swayHint();
+  return pageLayout().compact() ? ` · score ${banked + levelScore}` : '';
 }
 
 /** Swing amplitude, m, over which the status line tells a player driving the crane how to stop it. */
@@ -3133,7 +3093,7 @@ function swayHint(): string {
   const c = handles.controls;
   if (c.moves.length > 0 || c.steady || (swing.result && shell.world.time - swing.resultAt < RESULT_SHOWN)) return '';
   if (swayAmplitude(shell.world, handles) < SWAY_HINT) return '';
-  return touch ? ' · hold Steady to stop it' : ' · hold Space to steady it';
+  return touch ? ' · hold Steady to stop the swing' : ' · hold Space to steady the ball';
 }
 
 /**
@@ -3146,13 +3106,13 @@ function swingPhase(): string {
   const moves = handles.controls.moves;
   // Let go while the tagline draws the ball back: the line slips as soon as the ball is in place.
   if (moves.length === 0 && handles.controls.pull?.letGo === true && handles.controls.pull.offset > 0)
-    return ` · ${retargeted ? 'new target, same swing' : 'drawing back'}…`;
+    return ` · ${retargeted ? 'new target, same swing' : 'drawing the ball back'}…`;
   if (moves.length === 0) return '';
   if (moves[0]!.run) {
     retargeted = false;
     return ' · swinging!';
   }
-  return ` · ${retargeted ? 'new target, same swing' : 'hit'} in ${timeToHit(moves).toFixed(1)} s`;
+  return ` · ${retargeted ? 'new target, same swing' : 'swinging back'}… hit in ${timeToHit(moves).toFixed(1)} s`;
 }
 
 /** Seconds until the ball reaches its target on timed moves `moves`: what is left of those before the follow-through. */

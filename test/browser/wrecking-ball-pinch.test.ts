@@ -100,7 +100,7 @@ describe('wrecking ball on a phone: a pinch, a pull toward the camera, the HUD',
     };
     // The status line over the scene carries the score on a phone (the side column's score is in the
     // menu drawer there), after the level and before the swings.
-    expect(await g.page.locator('[data-hud="wrecking-ball"]').textContent()).toMatch(/^Level 1 · 0 pts · swings left 5\/5/);
+    expect(await g.page.locator('[data-hud="wrecking-ball"]').textContent()).toMatch(/^Level 1 · score 0 · swings left 5\/5/);
     // The ⌂ view button is a finger's target: at least 44 px tall (it was 25), within the viewport.
     const view = (await g.page.locator('[data-hud="reset-view"]').boundingBox())!;
     expect(view.height).toBeGreaterThanOrEqual(44);
