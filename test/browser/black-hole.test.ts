@@ -514,12 +514,14 @@ describe('black hole, the replay clock and the paused path words', () => {
     }, null);
     expect(beside.right).toBeLessThan(before.right);
     await g.page.getByRole('button', { name: 'parameters and charts' }).click();
-    const back = await g.waitFor(() => {
+    // The panel closes at once; the field is fitted to the stage again by the next frame's resize, so
+    // wait for that frame rather than reading the edge in the same frame the panel closed.
+    const back = await g.waitFor((wanted: number) => {
       const w = window.game as unknown as Fit,
         side = document.querySelector('.bp-side')!.getBoundingClientRect();
       const right = document.querySelector('canvas')!.getBoundingClientRect().left + w.renderer.camera.toScreenX(w.bh.field.width);
-      return side.width === 0 ? { right } : null;
-    }, null);
+      return side.width === 0 && Math.abs(right - wanted) < 1 ? { right } : null;
+    }, before.right);
     expect(Math.abs(back.right - before.right)).toBeLessThan(1);
     await g.page.evaluate(() => {
       const w = window.game as unknown as Bh;
