@@ -115,8 +115,8 @@ describe('catapult camera', () => {
       // front: shown by its inset and arrow, not cut by the edge).
       expect(inside(onScreen(aim, -3.0, 0, 1.1, 2)), tag).toBe(true);
       expect(aim.maxX, tag).toBeLessThanOrEqual(f.castleMinX - AIM_SHORT + 1e-9);
-      // The preview's drawn start on every level after the first (scene previewLimit) ends inside the view.
-      if (level > 0) expect(previewLimit(level, f), tag).toBeLessThan(aim.maxX);
+      // The preview's drawn start (scene previewLimit) ends inside the view on every level.
+      expect(previewLimit(level, f), tag).toBeLessThan(aim.maxX);
       // The lowest surface UPRIGHT_GROUND_CLOSE of the way up (to a millionth of a pixel), in the
       // castle's view too (the ground stays put as the camera follows a throw).
       expect(onScreen(aim, 0, f.floor, 1, f.floor)[3]!, tag).toBeCloseTo((1 - UPRIGHT_GROUND_CLOSE) * H, 6);
