@@ -38,6 +38,7 @@ import {
   aimCloseUp,
   type CameraShot,
   cameraShot,
+  easeShare,
   type Field,
   OPENING_FRAMES,
   PLAY_SKY,
@@ -517,7 +518,7 @@ shell.onWorldChange(() => {
  * shows in the earth: ./camera uprightGround; the scene in the screen's lower middle, earth
  * under it for the card saying how to play and the next-level button). Which view it heads for is
  * decided in ./camera (cameraShot), and its rectangle there too: a level new to the page opens on
- * the catapult and the castle together (./camera OPENING_FRAMES, uprightOpeningView) and closes in on the aim view, close on the catapult (./camera uprightAimView: a large stone, band and arc) with the castle in
+ * its castle, large (./camera OPENING_FRAMES, uprightOpeningView), and pans across the field to the aim view, close on the catapult (./camera uprightAimView: a large stone, band and arc) with the castle in
  * an inset under the ground and an arrow at the screen's edge saying how far it is (the whole field
  * on a 390 px phone was a thin band, a stone 8 to 12 px, under a tall empty sky); on an upright
  * tablet, where the field is large enough, the aim view holds the catapult and the whole castle and
@@ -705,7 +706,7 @@ function frameCamera(): void {
   // view is the whole field (an upright tablet). (Not where the aim view is close on the catapult
   // and the castle's inset shows in the earth, drawCloseUp: it is the look.)
   showLook(upright() && !levelEnded && !shotView && (peeking || (shot === 'aim' && !aimCloseUp(field(), cam.width, cam.height))));
-  // (The opening look: the catapult and the castle together, ./camera uprightOpeningView.)
+  // (The opening look: the castle large, ./camera uprightOpeningView; then the pan to the catapult.)
   const target =
     shot === 'castle'
       ? opens && !peeking
@@ -715,7 +716,12 @@ function frameCamera(): void {
         ? followView()
         : aimView();
   const size = `${cam.width}x${cam.height}`;
-  const k = size === framedFor ? 0.1 : 1;
+  // Eased by the physics steps since the last frame (./camera easeShare), not a tenth a frame: a slow
+  // page's camera keeps up with a stone in game time.
+  const world = shell.world;
+  const steps = Math.round((world.time - framedAt) / world.dt);
+  framedAt = world.time;
+  const k = size === framedFor ? easeShare(steps) : 1;
   if (size !== framedFor) sizesFramed.add(size);
   framedFor = size;
   cameraView.minX += k * (target.minX - cameraView.minX);
@@ -734,6 +740,8 @@ function frameCamera(): void {
 }
 /** Whether the camera is at rest (not panning or following): the cup stays where it is on screen. */
 let cameraSettled = false;
+/** The world's time (s) at the last frame the camera was framed for (frameCamera: how far it eases). */
+let framedAt = 0;
 /** The view the camera heads for (camera.ts cameraShot), decided at the last frame. */
 let shot: CameraShot = 'overview';
 /** Whether the player asked to look at the castle (the look button, upright only). */
