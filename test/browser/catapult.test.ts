@@ -1247,7 +1247,7 @@ describe('catapult', () => {
     expect(g.errors).toEqual([]);
   });
 
-  it('desktop 1280 x 800: a full pull is a long drag (a 200 px drag throws at about half power), and the aim shows its power, angle and the arc to past its top', async () => {
+  it('desktop 1280 x 800: a full pull is a long drag (a 200 px drag throws at about half power), and the aim shows its power, angle and a short arc, half-way to the castle', async () => {
     // The file's page is done with (no case from here on uses it): closed so that it does not keep
     // running beside the pages this case and the next open.
     await g.close();
