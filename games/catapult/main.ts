@@ -510,7 +510,8 @@ shell.onWorldChange(() => {
  * closer than the aim view or elsewhere: the camera eases to it while the stone flies and back to
  * the aim view once the throw's verdict has faded, or at once when a finger or the mouse goes down to aim.
  * On a wide view the scene is as tall as the castle needs; on a tall one the ground sits GROUND_AT of
- * the way up the screen, earth below it and sky above. The view eases a tenth of the way each frame;
+ * the way up the screen, earth below it and sky above. The view eases a tenth of the way each step
+ * (./camera easeShare: by the steps since the last frame);
  * it jumps when the screen's size changes.
  *
  * On an upright phone (a screen taller than wide) the camera frames the play for the tall screen,

@@ -108,7 +108,7 @@ describe('catapult on a phone held upright (390 x 844, touch)', () => {
     expect(Math.abs(look.ground - 0.5) * 788, JSON.stringify(look)).toBeLessThan(1);
     expect(look.perM, JSON.stringify(look)).toBeGreaterThan(20);
     // Held, then the pan to the catapult: at rest on the aim view after the opening's frames and the
-    // easing (a tenth of the way a frame: about 60 frames to within 1 cm), the castle off the screen
+    // easing (a tenth of the way a step, a frame a step here: about 60 frames to within 1 cm), the castle off the screen
     // and its inset showing.
     const { frames, restOnCastle } = await toAimView();
     expect(frames).toBeGreaterThan(OPENING_FRAMES - 2);
