@@ -6,7 +6,8 @@
  * screen), 'aim' (on an upright phone: the catapult close, with the castle shown in an inset and an
  * arrow at the screen's edge, or where the screen is wide enough the catapult and the whole castle),
  * 'follow' (from the aim view to the castle as the stone crosses the field) and 'castle' (the castle
- * and the rock behind it, close: a phone's look button, and a finished level's wreck).
+ * and the rock behind it, close: a phone's look button, a new level's opening look on a phone, and a
+ * finished level's wreck).
  *
  * On a desktop the views are `wideViews`: the whole field (the catapult and the castle) for the
  * level's start until its first throw and while the player pulls, the castle close between throws.
