@@ -6,7 +6,8 @@
  * screen), 'aim' (on an upright phone: the catapult close, with the castle shown in an inset and an
  * arrow at the screen's edge, or where the screen is wide enough the catapult and the whole castle),
  * 'follow' (from the aim view to the castle as the stone crosses the field) and 'castle' (the castle
- * and the rock behind it, close: a phone's look button, and a finished level's wreck).
+ * and the rock behind it, close: a phone's look button, a new level's opening look on a phone, and a
+ * finished level's wreck).
  *
  * On a desktop the views are `wideViews`: the whole field (the catapult and the castle) for the
  * level's start until its first throw and while the player pulls, the castle close between throws.
@@ -42,14 +43,15 @@ export interface CameraInput {
 }
 
 /**
- * Upright where the aim view is close on the catapult (`aimCloseUp`), a new level opens on the
- * catapult and the castle together (`uprightOpeningView`; the shot is 'castle') for this many frames
- * (0.67 s at 60 frames a second), and the camera then closes in on the catapult: the player sees
- * what they shoot at and where it lies from the catapult, before the castle shrinks to the inset
- * while they aim. (A level opened on the castle alone, held until the
- * first drag, showed a target with nothing to shoot it from.) A touch ends it at once.
+ * Upright where the aim view is close on the catapult (`aimCloseUp`), a new level opens on its
+ * castle, large (`uprightOpeningView`; the shot is 'castle'), for this many frames (1 s at 60 frames a
+ * second), and the camera then pans across the field to the catapult: the player sees what they
+ * shoot at and, in the pan, how far it lies from the catapult, before the castle goes to the inset
+ * while they aim. (Opened on the catapult and the castle together, a 390 px phone drew the scene as
+ * a thin strip low on the screen under 60 % of sky, 11 to 18 px a metre.) A touch ends it
+ * at once.
  */
-export const OPENING_FRAMES = 40;
+export const OPENING_FRAMES = 60;
 
 /**
  * Upright, the castle's view stays this long after a throw's verdict, s, before the camera goes back
@@ -195,14 +197,29 @@ export function uprightAimView(f: Field, width: number, height: number): View {
 }
 
 /**
- * Upright, a level's opening look (`OPENING_FRAMES`): the catapult and the castle together, from
- * AIM_LEFT to 1 m past the rock, the lowest surface UPRIGHT_GROUND of the way up. Opened on the
- * castle's view alone (its ground half-way up) a phone showed the targets over 300 px of plain earth
- * and no catapult; the camera then closes in on the catapult for the aim.
+ * Upright, a level's opening look (`OPENING_FRAMES`): the castle's view (`uprightCastleView`), the
+ * castle and the rock behind it as large as the screen's width allows (19 to 38 px a metre on a 390 px
+ * phone, 1.5 to 2.5 times the scale of a view holding the catapult too), the ground where the
+ * aim view has it, so the camera then pans level across the field to the catapult.
  * @throws RangeError if the screen's size is not positive.
  */
 export function uprightOpeningView(f: Field, width: number, height: number): View {
-  return uprightView(f, AIM_LEFT, rockRight(f.castleMaxX) + 1, width, height, UPRIGHT_GROUND);
+  return uprightCastleView(f, width, height);
+}
+
+/** The share of the way to its target the camera eases in one frame at one physics step a frame. */
+export const CAMERA_EASE = 0.1;
+
+/**
+ * The share of the way to its target the camera eases in a frame drawn `steps` physics steps after
+ * the last (at least one: a paused page still eases a tenth a frame): 1 - (1 - CAMERA_EASE)^steps, so
+ * a page drawing a frame every 4 steps (15 frames a second) follows a stone as closely, in game
+ * time, as one drawing every step. Eased a tenth a frame whatever the steps, such a page's camera
+ * lagged a 1 s throw by four times as far, and the stone reached the castle while the view was
+ * still on the field (the hit seen only in the inset).
+ */
+export function easeShare(steps: number): number {
+  return 1 - (1 - CAMERA_EASE) ** Math.max(1, steps);
 }
 
 /** Upright, the castle's view: the castle, the rock behind it and room for debris (0.8 m before, 1 m past the rock). */

@@ -38,6 +38,7 @@ import {
   aimCloseUp,
   type CameraShot,
   cameraShot,
+  easeShare,
   type Field,
   OPENING_FRAMES,
   PLAY_SKY,
@@ -83,6 +84,8 @@ import {
   type Level,
   launch,
   launchVelocity,
+  MISSES_FOR_FULL,
+  MISSES_FOR_MORE,
   type Piece,
   PROJECTILE_RADIUS,
   PULL,
@@ -102,9 +105,10 @@ const params = {
   gravity: 9.81,
   jointStrength: 400,
   /**
-   * The aim preview: 'auto' draws the whole flight to its first touch on the first level and only
-   * its start on the others (scene previewLimit), 'full' the whole flight on every level (URL
-   * `guide=full`: an easier game, and the tests that match the preview to the throw).
+   * The aim preview: 'auto' draws only the start of the flight (scene previewShare: half the way to
+   * the castle on the first level, 40 % on the others), reaching farther after repeated misses at a
+   * level; 'full' the whole flight on every level (URL `guide=full`: an easier game, and the tests
+   * that match the preview to the throw).
    */
   guide: choiceParam('guide', ['auto', 'full'] as const, 'auto'),
   reset: () => game.shell.reset(),
@@ -187,6 +191,12 @@ const PIECE_NAME: Record<Piece['kind'] | 'hill', string> = {
   brick: 'a stone block',
   stone: 'a stone',
 };
+/**
+ * Throws at the level on screen that brought nothing down, over all its tries since the player came
+ * to it (a restart keeps the count, another level starts it afresh): the aim preview reaches farther
+ * as they add up (scene previewShare).
+ */
+const misses = { level: 0, count: 0 };
 /** A fresh world with the current level (the shell calls it at start and on R). */
 function createWorld(): PhysicsWorld {
   // Once a page: the physics code compiled while the page loads, not in the level's first frames.
@@ -194,6 +204,11 @@ function createWorld(): PhysicsWorld {
   const world = createPhysicsWorld(worldOptions(params));
   lv = buildLevel(world, { level: params.level - 1, seed: params.seed, gravity: params.gravity, jointStrength: params.jointStrength });
   levelMass = params.projectileMass;
+  // Misses count over a level's tries: a new level starts the count afresh (previewReach).
+  if (misses.level !== params.level) {
+    misses.level = params.level;
+    misses.count = 0;
+  }
   shotsLeft = lv.shots;
   shots = [];
   best = { fallen: 0, broken: 0, score: 0 };
@@ -495,7 +510,8 @@ shell.onWorldChange(() => {
  * closer than the aim view or elsewhere: the camera eases to it while the stone flies and back to
  * the aim view once the throw's verdict has faded, or at once when a finger or the mouse goes down to aim.
  * On a wide view the scene is as tall as the castle needs; on a tall one the ground sits GROUND_AT of
- * the way up the screen, earth below it and sky above. The view eases a tenth of the way each frame;
+ * the way up the screen, earth below it and sky above. The view eases a tenth of the way each step
+ * (./camera easeShare: by the steps since the last frame);
  * it jumps when the screen's size changes.
  *
  * On an upright phone (a screen taller than wide) the camera frames the play for the tall screen,
@@ -503,7 +519,7 @@ shell.onWorldChange(() => {
  * shows in the earth: ./camera uprightGround; the scene in the screen's lower middle, earth
  * under it for the card saying how to play and the next-level button). Which view it heads for is
  * decided in ./camera (cameraShot), and its rectangle there too: a level new to the page opens on
- * the catapult and the castle together (./camera OPENING_FRAMES, uprightOpeningView) and closes in on the aim view, close on the catapult (./camera uprightAimView: a large stone, band and arc) with the castle in
+ * its castle, large (./camera OPENING_FRAMES, uprightOpeningView), and pans across the field to the aim view, close on the catapult (./camera uprightAimView: a large stone, band and arc) with the castle in
  * an inset under the ground and an arrow at the screen's edge saying how far it is (the whole field
  * on a 390 px phone was a thin band, a stone 8 to 12 px, under a tall empty sky); on an upright
  * tablet, where the field is large enough, the aim view holds the catapult and the whole castle and
@@ -575,8 +591,12 @@ function field(): Field {
     castleMaxX: lv.castleMaxX,
     castleTop: lv.castleTop,
     floor: Math.min(0, ...lv.terrain.map((t) => t.maxY)),
-    previewTo: previewLimit(params.level - 1, lv, params.guide === 'full'),
+    previewTo: previewReach(),
   };
+}
+/** The farthest x (m) the aim preview draws now (scene previewLimit, with this level's misses). */
+function previewReach(): number {
+  return previewLimit(params.level - 1, lv, params.guide === 'full', misses.level === params.level ? misses.count : 0);
 }
 /** The right face of the rock behind the castle, m. */
 const rockRight = (): number => rockRightOf(lv.castleMaxX);
@@ -687,7 +707,7 @@ function frameCamera(): void {
   // view is the whole field (an upright tablet). (Not where the aim view is close on the catapult
   // and the castle's inset shows in the earth, drawCloseUp: it is the look.)
   showLook(upright() && !levelEnded && !shotView && (peeking || (shot === 'aim' && !aimCloseUp(field(), cam.width, cam.height))));
-  // (The opening look: the catapult and the castle together, ./camera uprightOpeningView.)
+  // (The opening look: the castle large, ./camera uprightOpeningView; then the pan to the catapult.)
   const target =
     shot === 'castle'
       ? opens && !peeking
@@ -697,7 +717,12 @@ function frameCamera(): void {
         ? followView()
         : aimView();
   const size = `${cam.width}x${cam.height}`;
-  const k = size === framedFor ? 0.1 : 1;
+  // Eased by the physics steps since the last frame (./camera easeShare), not a tenth a frame: a slow
+  // page's camera keeps up with a stone in game time.
+  const world = shell.world;
+  const steps = Math.round((world.time - framedAt) / world.dt);
+  framedAt = world.time;
+  const k = size === framedFor ? easeShare(steps) : 1;
   if (size !== framedFor) sizesFramed.add(size);
   framedFor = size;
   cameraView.minX += k * (target.minX - cameraView.minX);
@@ -716,6 +741,8 @@ function frameCamera(): void {
 }
 /** Whether the camera is at rest (not panning or following): the cup stays where it is on screen. */
 let cameraSettled = false;
+/** The world's time (s) at the last frame the camera was framed for (frameCamera: how far it eases). */
+let framedAt = 0;
 /** The view the camera heads for (camera.ts cameraShot), decided at the last frame. */
 let shot: CameraShot = 'overview';
 /** Whether the player asked to look at the castle (the look button, upright only). */
@@ -940,6 +967,8 @@ function followThrow(world: PhysicsWorld, t: Tally): void {
   const gained = t.score - lastThrow.scoreBefore;
   lastThrow.decidedAt = world.time;
   lastThrow.good = gained > 0;
+  // (A throw that brought nothing down counts toward the aim preview's help, previewReach.)
+  if (gained <= 0 && misses.level === params.level) misses.count++;
   if (gained > 0) {
     lastThrow.verdict = `+${gained}`;
     lastThrow.at = [(lv.castleMinX + lv.castleMaxX) / 2, lv.castleTop + 0.8];
@@ -1463,8 +1492,8 @@ function showBreaks(world: PhysicsWorld): void {
 
 /**
  * The arc preview: the stone's flight from the cup to where it first touches the ground, a bank of
- * earth, the rock or a castle piece as it stands now (previewFlight, at most PREVIEW_TIME s; after
- * the first level only its start, previewLimit), drawn as dots in the page over the canvas (aimDom)
+ * earth, the rock or a castle piece as it stands now (previewFlight, at most PREVIEW_TIME s; only
+ * its start unless the player keeps missing, previewReach), drawn as dots in the page over the canvas (aimDom)
  * on every pointer move and every frame, so the arc follows the finger even on a slow page: drawn on
  * the canvas at the frame's pace, a page at 3 fps would show the arc of an earlier pull while the
  * stone flies by the latest one.
@@ -1610,8 +1639,7 @@ function showAimDom(): void {
   // With a miss's brief: what that throw did, while the hint over the scene is gone.
   const brief = lastThrow.brief ? `: ${lastThrow.brief}` : '';
   const last = lastThrow.body ? `last ${Math.round(100 * lastThrow.power)} %  ${Math.round(lastThrow.angle)}°${brief}\n` : '';
-  // The first aim past level 1 says why the dots stop short (previewLimit), so it reads as the rule.
-  const note = params.level === 2 && shots.length === 0 && params.guide !== 'full' ? 'Now the dots show only the start\n' : '';
+  const note = aimNote();
   const text = `${note}${last}${Math.round(100 * power)} %  ${Math.round(aimShown.angle)}°`;
   if (d.label.textContent !== text) d.label.textContent = text;
   // Centred over the bar, and all on the screen (the last throw's line is wider than the bar).
@@ -1637,6 +1665,19 @@ function showAimDom(): void {
   aimLabelBox = boxAt(y);
   d.box.style.left = `${x - 2}px`;
   d.box.style.top = `${y - 2}px`;
+}
+/**
+ * A line over the aim's numbers about the arc preview (previewReach): on the first two levels' first
+ * aim that the dots show only the throw's start (so a short arc reads as the rule, not a fault), and
+ * while the misses at a level have just brought more of it (scene MISSES_FOR_MORE, MISSES_FOR_FULL)
+ * that it now reaches farther; else ''.
+ */
+function aimNote(): string {
+  if (params.guide === 'full') return '';
+  const n = misses.level === params.level ? misses.count : 0;
+  if (n === MISSES_FOR_FULL) return 'Help: the dots show the whole throw\n';
+  if (n === MISSES_FOR_MORE) return 'Help: the dots reach farther\n';
+  return params.level <= 2 && shots.length === 0 && n === 0 ? 'The dots show only the start\n' : '';
 }
 /** Gap, px, between the press (where a pull starts) and the aim's numbers and bar over it (or under it). */
 const AIM_OVER_PRESS = 28;
@@ -1674,19 +1715,20 @@ function placeDots(group: SVGElement, n: number, at: (i: number) => [number, num
 }
 
 /**
- * The arc preview for a throw at (vx, vy), m/s (see PREVIEW_TIME): dots fading along the flight to
- * its first touch, at least PREVIEW_GAP px apart (a small scene, an upright phone's, crowded them
- * into a rope), the last one (the touch) always drawn and larger; past the touch, faint hollow dots
- * where the throw was headed had nothing stood in its way (flightPast), to the grass. After the first
- * level only the flight's start (previewLimit), all dots alike, nothing past. While the castle's close-up
+ * The arc preview for a throw at (vx, vy), m/s (see PREVIEW_TIME): only the flight's start
+ * (previewReach: a short aiming arc, where it comes down judged by the player), all dots alike,
+ * at least PREVIEW_GAP px apart (a small scene, an upright phone's, crowded them into a rope); where
+ * it shows the whole flight (guide=full, or after repeated misses), dots fading along it to its first
+ * touch, the last one (the touch) larger, and past the touch faint hollow dots where the throw was
+ * headed had nothing stood in its way (flightPast), to the grass. While the castle's close-up
  * shows (an upright phone), the same flight's dots where it crosses the close-up, at its scale.
  */
 function drawArc(vx: number, vy: number): void {
   const world = shell.world;
   const cam = renderer.camera;
   const flight = previewFlight(world, lv, vx, vy, -world.gravity[1]!, PREVIEW_TIME);
-  // After the first level only the flight's start (previewLimit): where it comes down is judged.
-  const arc = cutArc(flight, previewLimit(params.level - 1, lv, params.guide === 'full'));
+  // Only the flight's start (previewReach): where it comes down is the player's judgement.
+  const arc = cutArc(flight, previewReach());
   const cut = arc !== flight;
   const n = arc.length / 2;
   aimShown.reach = arc[arc.length - 2]!;
@@ -1812,7 +1854,7 @@ closeSprite.visible = closeFrame.visible = closeLabel.visible = false;
 app.stage.addChild(closeSprite, closeFrame, closeLabel);
 /** The smallest magnification of the close-up worth showing (its largest: CLOSE_MAX). */
 const CLOSE_MIN = 1.4;
-/** Sky over the castle's top in its inset while aiming where the arc preview shows the whole flight (level 1), m: room for its dots coming down on the castle (elsewhere 0.8 m). */
+/** Sky over the castle's top in its inset while aiming where the arc preview shows the whole flight (guide=full, or after repeated misses), m: room for its dots coming down on the castle (elsewhere 0.8 m). */
 const CLOSE_SKY_AIMING = 2;
 /** Pixels between the close-up's foot and the top of the castle on the screen. */
 const CLOSE_GAP = 36;
@@ -1912,7 +1954,7 @@ function drawCloseUp(): void {
     const x0 = lv.castleMinX - 0.6,
       x1 = lv.castleMaxX + 0.6,
       y0 = floor - 0.3,
-      y1 = lv.castleTop + (inset && previewLimit(params.level - 1, lv, params.guide === 'full') === Infinity ? CLOSE_SKY_AIMING : 0.8);
+      y1 = lv.castleTop + (inset && previewReach() === Infinity ? CLOSE_SKY_AIMING : 0.8);
     const sx = cam.toScreenX(x0),
       sy = cam.toScreenY(y1),
       w = cam.toScreenLength(x1 - x0),

@@ -828,21 +828,55 @@ export function flightPast(lv: Pick<Level, 'terrain'>, vx: number, vy: number, g
  * Share of the way from the catapult (LAUNCH.x) to the castle's front (Level.castleMinX) that the
  * aim preview draws on every level after the first: the start of the flight, its angle and how it
  * begins to bend, but not where it comes down. The whole flight to its first touch made the second
- * level a throw aimed along the dots (two in three throws whose dots ended on the keep cleared it);
- * the first level keeps it, to learn the throw, and the last throw's trail still guides the next.
+ * level a throw aimed along the dots (two in three throws whose dots ended on level 2's keep
+ * cleared it); the last throw's trail and its numbers still guide the next.
  */
 export const SHORT_PREVIEW_SHARE = 0.4;
 
 /**
- * The farthest x (m) the aim preview draws on level `level` (0-based) of `lv`: Infinity (the whole
- * flight to its first touch, previewFlight) on the first level or when `full`, else SHORT_PREVIEW_SHARE
- * of the way from LAUNCH.x to `lv.castleMinX`.
- * @throws RangeError if level is not an integer in [0, LEVEL_COUNT).
+ * The same on the first level: a little more of the rise, to learn the throw, but still not where it
+ * comes down. The whole flight there drew the dots into the castle and a stranger took three stars
+ * on the first two levels with three throws (issue 34: "the aim aid plays the game for you").
  */
-export function previewLimit(level: number, lv: Pick<Level, 'castleMinX'>, full = false): number {
+export const FIRST_PREVIEW_SHARE = 0.5;
+
+/**
+ * Help for a player who keeps missing: from MISSES_FOR_MORE throws at a level that brought nothing
+ * down (counted over its tries, since the level was entered) the preview reaches HELP_PREVIEW_SHARE
+ * of the way to the castle's front (most of the fall, not the landing), and from MISSES_FOR_FULL the
+ * whole flight to its first touch. A level holds 3 throws: the first try's misses bring the longer
+ * arc, a failed try and one more the whole flight.
+ */
+export const MISSES_FOR_MORE = 2;
+export const MISSES_FOR_FULL = 4;
+export const HELP_PREVIEW_SHARE = 0.75;
+
+/**
+ * The share of the way from LAUNCH.x to the castle's front that the aim preview draws on level
+ * `level` (0-based) after `misses` throws there that brought nothing down: FIRST_PREVIEW_SHARE on the
+ * first level, SHORT_PREVIEW_SHARE on the others, HELP_PREVIEW_SHARE from MISSES_FOR_MORE misses
+ * and Infinity (the whole flight) from MISSES_FOR_FULL.
+ * @throws RangeError if level is not an integer in [0, LEVEL_COUNT) or misses not an integer >= 0.
+ */
+export function previewShare(level: number, misses = 0): number {
   if (!Number.isInteger(level) || level < 0 || level >= LEVEL_COUNT)
-    throw new RangeError(`previewLimit: level must be an integer in [0, ${LEVEL_COUNT}), got ${level}`);
-  return full || level === 0 ? Number.POSITIVE_INFINITY : LAUNCH.x + SHORT_PREVIEW_SHARE * (lv.castleMinX - LAUNCH.x);
+    throw new RangeError(`previewShare: level must be an integer in [0, ${LEVEL_COUNT}), got ${level}`);
+  if (!Number.isInteger(misses) || misses < 0) throw new RangeError(`previewShare: misses must be an integer >= 0, got ${misses}`);
+  if (misses >= MISSES_FOR_FULL) return Number.POSITIVE_INFINITY;
+  if (misses >= MISSES_FOR_MORE) return HELP_PREVIEW_SHARE;
+  return level === 0 ? FIRST_PREVIEW_SHARE : SHORT_PREVIEW_SHARE;
+}
+
+/**
+ * The farthest x (m) the aim preview draws on level `level` (0-based) of `lv` after `misses` throws
+ * there that brought nothing down (`previewShare`): that share of the way from LAUNCH.x to
+ * `lv.castleMinX`, or Infinity (the whole flight to its first touch, previewFlight) when `full`
+ * (the page's guide=full) or after MISSES_FOR_FULL misses.
+ * @throws RangeError as `previewShare`.
+ */
+export function previewLimit(level: number, lv: Pick<Level, 'castleMinX'>, full = false, misses = 0): number {
+  const share = previewShare(level, misses);
+  return full ? Number.POSITIVE_INFINITY : LAUNCH.x + share * (lv.castleMinX - LAUNCH.x);
 }
 
 /**

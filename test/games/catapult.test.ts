@@ -11,17 +11,22 @@ import {
   angleForRange,
   buildLevel,
   cutArc,
+  FIRST_PREVIEW_SHARE,
   flightPast,
+  HELP_PREVIEW_SHARE,
   hasFallen,
   LAUNCH,
   LEVEL_COUNT,
   launch,
   launchVelocity,
+  MISSES_FOR_FULL,
+  MISSES_FOR_MORE,
   PREVIEW_DT,
   PROJECTILE_RADIUS,
   PULL,
   previewFlight,
   previewLimit,
+  previewShare,
   pullFor,
   SHORT_PREVIEW_SHARE,
   surfaceAt,
@@ -430,20 +435,39 @@ describe('catapult rules', () => {
     expect(onHill).toBeGreaterThan(3);
   });
 
-  it('past the first level the aim preview shows only the start of the flight, never where it comes down', () => {
+  it('the aim preview shows only the start of the flight, never where it comes down, and more after repeated misses', () => {
     // Issue 34: aimed along the whole preview, two in three throws whose dots ended on level 2's keep
-    // cleared it. The first level keeps the whole flight; on level 2 every throw of a sweep shows at
-    // most SHORT_PREVIEW_SHARE of the way to the castle's front, ending on the drag-free parabola
+    // cleared it, and a stranger whose first level drew the dots into the castle took three stars on
+    // both first levels with three throws. Every level shows at most FIRST_PREVIEW_SHARE (level 1) or
+    // SHORT_PREVIEW_SHARE (the rest) of the way to the castle's front; after MISSES_FOR_MORE throws
+    // that brought nothing down HELP_PREVIEW_SHARE, after MISSES_FOR_FULL the whole flight. On level
+    // 2 every throw of a sweep ends on the drag-free parabola
     // y = y0 + x tan(a) - g x^2 / (2 v^2 cos^2 a) (closed form; 1 mm: the cut is interpolated
     // between two 0.01 s steps, an error of g dt^2 / 8 = 0.1 mm), and a throw into the ground before
     // that point keeps its whole flight to the touch.
     const first = level(0);
-    expect(previewLimit(0, first.lv)).toBe(Number.POSITIVE_INFINITY);
+    const firstLimit = previewLimit(0, first.lv);
+    expect(firstLimit).toBeCloseTo(LAUNCH.x + FIRST_PREVIEW_SHARE * (first.lv.castleMinX - LAUNCH.x), 12);
+    // Short of the near stall by more than 3 m: the dots end on the rise, not on the stall.
+    expect(firstLimit).toBeLessThan(first.lv.castleMinX - 3);
     const { w, lv } = level(1);
     expect(previewLimit(1, lv, true)).toBe(Number.POSITIVE_INFINITY);
     const limit = previewLimit(1, lv);
     expect(limit).toBeCloseTo(LAUNCH.x + SHORT_PREVIEW_SHARE * (lv.castleMinX - LAUNCH.x), 12);
     expect(limit).toBeLessThan(lv.castleMinX - 3);
+    // Help grows with misses: the same before MISSES_FOR_MORE, farther (still short of the castle)
+    // until MISSES_FOR_FULL, then the whole flight.
+    for (const l of [0, 1]) {
+      const c = level(l).lv;
+      expect(previewLimit(l, c, false, MISSES_FOR_MORE - 1)).toBe(previewLimit(l, c));
+      const more = previewLimit(l, c, false, MISSES_FOR_MORE);
+      expect(more).toBeGreaterThan(previewLimit(l, c));
+      expect(more).toBeLessThan(c.castleMinX);
+      expect(previewLimit(l, c, false, MISSES_FOR_FULL - 1)).toBe(more);
+      expect(previewLimit(l, c, false, MISSES_FOR_FULL)).toBe(Number.POSITIVE_INFINITY);
+    }
+    expect(previewShare(1, 2)).toBe(HELP_PREVIEW_SHARE);
+    expect(() => previewShare(1, -1)).toThrow(/previewShare: misses must be an integer >= 0, got -1/);
     let cutCount = 0;
     for (let deg = 0; deg <= 70; deg += 5)
       for (let f = 0.3; f <= 1.001; f += 0.1) {
@@ -466,7 +490,7 @@ describe('catapult rules', () => {
         expect(Math.abs(ey - parabola)).toBeLessThan(1e-3);
       }
     expect(cutCount).toBeGreaterThan(80);
-    expect(() => previewLimit(LEVEL_COUNT, lv)).toThrow(/previewLimit: level must be an integer in \[0, \d+\), got \d+/);
+    expect(() => previewLimit(LEVEL_COUNT, lv)).toThrow(/previewShare: level must be an integer in \[0, \d+\), got \d+/);
   });
 
   it('rejects a level out of range', () => {
