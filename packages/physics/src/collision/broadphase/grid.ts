@@ -198,8 +198,8 @@ export function broadphaseSystem(world: PhysicsWorld): void {
   const reachSum = classifyBalls(world, balls);
   // Cell size from the reach of ordinary bodies; outliers go to the oversized list.
   const limit = OVERSIZED_FACTOR * (reachSum / n);
-  const maxReachAll = layoutGrid(world, balls, limit);
-  const small = sortIntoBuckets(world, balls, limit);
+  const maxReachAll = bucketBalls(world, balls, limit);
+  const small = n - cs.grid.oversizedCount;
   // Pair generation. Waking a sleeping body wakes its whole island; the pass is then run again so the
   // woken bodies meet their neighbours (which were still asleep, and skipped, in the first pass).
   for (let pass = 0; pass < 4; pass++) {
@@ -277,13 +277,15 @@ function classifyBalls(world: PhysicsWorld, balls: ArrayLike<number>): number {
 }
 
 /**
- * Chooses the grid for balls whose reach is at most `limit` (m): the cell size (twice the largest
- * reach), and a dense grid over the bodies' cells when they are few enough (buckets in space order:
- * the pairs, contacts and solver bodies follow, which keeps the solver's reads near each other), else
- * the spatial hash; written to `cs.grid` (ensureGrid sizes its arrays). Returns the largest reach of
- * any ball, oversized ones included, m.
+ * Sorts the balls into the grid, written to `cs.grid` (ensureGrid sizes its arrays). First its layout
+ * for balls whose reach is at most `limit` (m): the cell size (twice the largest reach), and a dense
+ * grid over the bodies' cells when they are few enough (buckets in space order: the pairs, contacts
+ * and solver bodies follow, which keeps the solver's reads near each other), else the spatial hash.
+ * Then a counting sort of the balls by the bucket of their cell (count, prefix sum, place); balls
+ * whose reach is over `limit` go to the oversized list (the grid holds the others, n minus
+ * `g.oversizedCount`). Returns the largest reach of any ball, oversized ones included, m.
  */
-function layoutGrid(world: PhysicsWorld, balls: ArrayLike<number>, limit: number): number {
+function bucketBalls(world: PhysicsWorld, balls: ArrayLike<number>, limit: number): number {
   const cs = world.collision,
     g = cs.grid;
   const n = balls.length;
@@ -358,25 +360,7 @@ function layoutGrid(world: PhysicsWorld, balls: ArrayLike<number>, limit: number
     g.spanXZ = 0;
   }
   ensureGrid(cs, n, table);
-  return maxReachAll;
-}
-
-/**
- * Counting sort of the balls by the bucket of their cell (count, prefix sum, place) into the grid
- * `layoutGrid` chose; balls whose reach is over `limit` go to the oversized list. Returns the number
- * of balls in the grid.
- */
-function sortIntoBuckets(world: PhysicsWorld, balls: ArrayLike<number>, limit: number): number {
-  const cs = world.collision,
-    g = cs.grid;
-  const n = balls.length;
-  const is3D = world.dimensions === 3;
-  const margin = cs.margin,
-    radius = world.components.Ball.radius;
-  const { x: ox, y: oy, z: oz } = world.components.PreviousPosition;
-  const invCell = 1 / g.cellSize,
-    table = g.tableSize,
-    dense = g.spanX !== 0;
+  // The counting sort into the layout just chosen (table, dense and invCell are the grid's now).
   const gx0 = g.originX,
     gy0 = g.originY,
     gz0 = g.originZ,
@@ -422,7 +406,7 @@ function sortIntoBuckets(world: PhysicsWorld, balls: ArrayLike<number>, limit: n
   }
   for (let b = table; b > 0; b--) start[b] = start[b - 1]!;
   start[0] = 0;
-  return n - overCount;
+  return maxReachAll;
 }
 
 /** Pairs of the oversized balls: against each other directly, against the `small` grid balls by a range query. */
@@ -442,15 +426,6 @@ function oversizedPairs(world: PhysicsWorld, small: number): void {
       z = oz[e]!;
     const reach = radius[e]! + margin[e]!;
     const te = type[e]!;
-    for (let j = i + 1; j < overCount; j++) {
-      const f = over[j]!;
-      if (te !== BodyType.Dynamic && type[f] !== BodyType.Dynamic && !wakes(te, type[f]!)) continue;
-      const dx = ox[f]! - x,
-        dy = oy[f]! - y,
-        dz = oz[f]! - z;
-      const rr = reach + radius[f]! + margin[f]!;
-      if (dx * dx + dy * dy + dz * dz < rr * rr) addBallPair(world, cs, e, f);
-    }
     const B = boxArgs;
     B[0] = x - reach;
     B[1] = y - reach;
@@ -458,10 +433,12 @@ function oversizedPairs(world: PhysicsWorld, small: number): void {
     B[3] = x + reach;
     B[4] = y + reach;
     B[5] = z + reach;
+    // The grid balls near e (queryBox reads only the grid, which the wakes below leave alone).
     const found = queryBox(world, cs, small);
     const cand = g.candidates;
-    for (let k = 0; k < found; k++) {
-      const f = cand[k]!;
+    // The oversized balls after e, then those grid balls: each pair once, in that order.
+    for (let k = i + 1, end = overCount + found; k < end; k++) {
+      const f = k < overCount ? over[k]! : cand[k - overCount]!;
       if (te !== BodyType.Dynamic && type[f] !== BodyType.Dynamic && !wakes(te, type[f]!)) continue;
       const dx = ox[f]! - x,
         dy = oy[f]! - y,
