@@ -874,6 +874,12 @@ function latticeTexture(repeatAlong: number, alongX: boolean): CanvasTexture {
 const JIB_LENGTH = RADIUS_RANGE[1] + 4;
 /** How far the jib reaches out from the mast, m (it reaches 2 m back). */
 const JIB_LENGTH_OUT = JIB_LENGTH - 2;
+/**
+ * How much the crane's lattice (jib and mast) glows in its own yellow: its faces turned from the sun
+ * stay the mast's yellow rather than going olive, so the jib seen from below reads as the same steel
+ * as the mast, one crane (unlit, the jib's underside drew dark and read as a second crane).
+ */
+const CRANE_GLOW = 0.45;
 const jibMaterial = new MeshStandardMaterial({
   color: COLORS.mast,
   roughness: 0.6,
@@ -882,9 +888,12 @@ const jibMaterial = new MeshStandardMaterial({
   alphaTest: 0.5,
   transparent: false,
   side: DoubleSide,
+  emissive: COLORS.mast,
+  emissiveIntensity: CRANE_GLOW,
 });
 // Alpha from the texture's own brightness: the lattice's bars opaque, the panels clear.
 jibMaterial.alphaMap = jibMaterial.map;
+jibMaterial.emissiveMap = jibMaterial.map;
 const jib = new Mesh<BoxGeometry, Material>(new BoxGeometry(JIB_LENGTH, 0.55, 0.55), jibMaterial);
 jib.castShadow = true;
 // Solid whichever way it points and whatever it crosses on the screen: its lattice's open panels
@@ -908,9 +917,12 @@ const mastLattice = new Mesh(
     map: latticeTexture(JIB_HEIGHT / 0.82, false),
     alphaTest: 0.5,
     side: DoubleSide,
+    emissive: COLORS.mast,
+    emissiveIntensity: CRANE_GLOW,
   }),
 );
 (mastLattice.material as MeshStandardMaterial).alphaMap = (mastLattice.material as MeshStandardMaterial).map;
+(mastLattice.material as MeshStandardMaterial).emissiveMap = (mastLattice.material as MeshStandardMaterial).map;
 mastLattice.position.set(0, JIB_HEIGHT / 2, 0);
 mastLattice.castShadow = true;
 app.scene.add(mastLattice);
@@ -985,6 +997,7 @@ const apexMaterial = jibMaterial.clone();
 apexMaterial.map = latticeTexture(4, true);
 apexMaterial.map.repeat.set(4, 3);
 apexMaterial.alphaMap = apexMaterial.map;
+apexMaterial.emissiveMap = apexMaterial.map;
 const apex = new Mesh(new ConeGeometry(0.55, APEX_HEIGHT, 4, 1, true), apexMaterial);
 apex.position.set(0, JIB_HEIGHT + 0.45 + APEX_HEIGHT / 2, 0);
 apex.castShadow = true;
