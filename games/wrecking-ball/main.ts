@@ -123,7 +123,7 @@ import {
   type WreckingBallHandles,
   wreckingBallWorldOptions,
 } from './scene';
-import { playStatusLine } from './status';
+import { clearRuleLine, playStatusLine } from './status';
 
 /** Whether the page is taller than wide (a phone held upright): the camera frames a nearer view. */
 const PORTRAIT = window.innerHeight > window.innerWidth;
@@ -180,10 +180,12 @@ let cleared = false;
  * cleared once the collapse that reached its target has settled (see gameStep); nothing changes
  * its score after that.
  */
-const clearedWith: { swings: number; stars: number; tapped: boolean; score: ClearScore } = {
+const clearedWith: { swings: number; stars: number; tapped: boolean; score: ClearScore; standing: number } = {
   swings: 0,
   stars: 0,
   tapped: false,
+  /** Pieces still standing when the result was given (the banner's last line: fixed, as the result is). */
+  standing: 0,
   score: clearScore(0, 0),
 };
 /** Smoothed step time, ms (exponential average over ~30 steps), and the worst of the last second. */
@@ -281,6 +283,7 @@ function gameStep(world: PhysicsWorld): void {
     cleared = true;
     clearedWith.swings = reachedWith;
     clearedWith.stars = swingStars(clearedWith.swings, true, handles.level);
+    clearedWith.standing = handles.pieces.length - fallenCount(handles.pieces);
     sound.chime(1046, 0.6);
     // The clear bonus and one for each star (fewer swings), said part by part in the banner.
     clearedWith.score = clearScore(levelScore, clearedWith.stars);
@@ -2195,11 +2198,13 @@ function clearedLine(): string {
   return `Level ${handles.level} cleared in ${swings} ${swings === 1 ? 'swing' : 'swings'}! ${'★'.repeat(stars)}${'☆'.repeat(3 - stars)}`;
 }
 /**
- * The banner under the result: where the score's jump at the clear came from, and how the stars
- * are earned ("blocks 396 + clear 500 + ★★ 500 = 1396" and "★★★ in 2 swings · ★★ in 3 · ★ in 4–5").
+ * The banner under the result: where the score's jump at the clear came from, how the stars
+ * are earned ("blocks 396 + clear 500 + ★★ 500 = 1396" and "★★★ in 2 swings · ★★ in 3 · ★ in 4–5"),
+ * and what the clear asked, with the pieces left standing (./status clearRuleLine).
  */
 function clearedBanner(): string {
-  return `${clearedLine()}\n${clearScoreLine(clearedWith.score, clearedWith.stars)}\n${starsRule(handles.level)}`;
+  const rule = clearRuleLine(handles.level, clearTarget(handles.pieces, handles.level), clearedWith.standing);
+  return `${clearedLine()}\n${clearScoreLine(clearedWith.score, clearedWith.stars)}\n${starsRule(handles.level)}\n${rule}`;
 }
 /** Whether the level's swings are all used and it is not cleared (a swing is refused). */
 function outOfSwings(): boolean {
@@ -3016,7 +3021,7 @@ function frame(): void {
     status.textContent = cleared
       ? `${clearedLine()} · final score ${banked + levelScore} · ${touch ? 'tap' : 'press L or'} Level ${handles.level + 1} ▶`
       : reachedAt >= 0
-        ? `Level ${handles.level} · target reached! · down ${f} of ${clearTarget(handles.pieces, handles.level)} · score ${banked + levelScore} (counting the fall${falling > 0 ? `: ${falling} still moving` : ''})`
+        ? `Level ${handles.level} · target reached! · down ${f}, ${clearTarget(handles.pieces, handles.level)} clear it · score ${banked + levelScore} (counting the fall${falling > 0 ? `: ${falling} still moving` : ''})`
         : playStatusLine(
             {
               level: handles.level,

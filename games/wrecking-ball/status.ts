@@ -34,8 +34,8 @@ export interface PlayStatus {
 export const COMPACT_EXTRAS = 1;
 
 /**
- * The status line: 'Level N · swings left L/B (★★★ in P) · down F of T to clear' (the score after the
- * level on a compact screen), then the extras: all of them on a large screen, the first
+ * The status line: 'Level N · swings left L/B (★★★ in P) · down F of T to clear' ('down F, T clear
+ * it' once F passes T; the score after the level on a compact screen), then the extras: all of them on a large screen, the first
  * COMPACT_EXTRAS that are not '' on a compact one. The blocks down count toward the clear target,
  * not the level's whole count of pieces: 'down 16/27' with the level cleared read as a level half
  * standing, where 'down 16 of 16 to clear' says what the clear asks.
@@ -44,5 +44,24 @@ export function playStatusLine(s: PlayStatus, compact: boolean): string {
   const score = s.score === null ? '' : ` · score ${s.score}`;
   const extras = s.extras.filter((e) => e !== '');
   const said = compact ? extras.slice(0, COMPACT_EXTRAS) : extras;
-  return `Level ${s.level}${score} · swings left ${s.left}/${s.budget} (★★★ in ${s.par}) · down ${s.fallen} of ${s.target} to clear${said.join('')}`;
+  const down = s.fallen <= s.target ? `down ${s.fallen} of ${s.target} to clear` : `down ${s.fallen}, ${s.target} clear it`;
+  return `Level ${s.level}${score} · swings left ${s.left}/${s.budget} (★★★ in ${s.par}) · ${down}${said.join('')}`;
+}
+
+/**
+ * The cleared banner's last line: how many down the clear asked and how many pieces still stand, so
+ * a level cleared with a tower left standing reads as cleared by its rule ('16 down clears level 1:
+ * the 6 still standing are spare'), not as a count gone wrong; with none standing, the rule alone.
+ * @throws RangeError on counts that are not integers >= 0 or a level not an integer >= 1.
+ */
+export function clearRuleLine(level: number, target: number, standing: number): string {
+  if (!Number.isInteger(level) || level < 1) throw new RangeError(`clearRuleLine: level must be an integer >= 1, got ${level}`);
+  for (const [name, n] of [
+    ['target', target],
+    ['standing', standing],
+  ] as const)
+    if (!Number.isInteger(n) || n < 0) throw new RangeError(`clearRuleLine: ${name} must be an integer >= 0, got ${n}`);
+  const rule = `${target} down clears level ${level}`;
+  if (standing === 0) return rule;
+  return `${rule}: the ${standing} still standing ${standing === 1 ? 'is' : 'are'} spare`;
 }
