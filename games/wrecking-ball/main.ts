@@ -874,6 +874,13 @@ function latticeTexture(repeatAlong: number, alongX: boolean): CanvasTexture {
   t.colorSpace = SRGBColorSpace;
   return t;
 }
+/**
+ * The lattices' alpha test (jib, apex, mast). The texture's bars cover about a third of a panel, so
+ * its smaller mipmaps average to an alpha near 0.3: at 0.5 a jib seen end-on or far off (drawn from
+ * those mipmaps) lost its bars and broke up into loose dots, a see-through ghost of a jib; at 0.25
+ * it is drawn whole there (a solid beam, as a far lattice looks) and the near bars are as before.
+ */
+const LATTICE_ALPHA_TEST = 0.25;
 const JIB_LENGTH = RADIUS_RANGE[1] + 4;
 /** How far the jib reaches out from the mast, m (it reaches 2 m back). */
 const JIB_LENGTH_OUT = JIB_LENGTH - 2;
@@ -888,7 +895,7 @@ const jibMaterial = new MeshStandardMaterial({
   roughness: 0.6,
   metalness: 0.2,
   map: latticeTexture(JIB_LENGTH / 0.55, true),
-  alphaTest: 0.5,
+  alphaTest: LATTICE_ALPHA_TEST,
   transparent: false,
   side: DoubleSide,
   emissive: COLORS.mast,
@@ -918,7 +925,7 @@ const mastLattice = new Mesh(
     roughness: 0.6,
     metalness: 0.2,
     map: latticeTexture(JIB_HEIGHT / 0.82, false),
-    alphaTest: 0.5,
+    alphaTest: LATTICE_ALPHA_TEST,
     side: DoubleSide,
     emissive: COLORS.mast,
     emissiveIntensity: CRANE_GLOW,
