@@ -255,7 +255,7 @@ export function skylineTexture(): CanvasTexture {
 
 /**
  * A cheaper stand-in for physically based material `m` (for a slow GPU, see main.ts's quality): its
- * colour, texture, alpha, side and transparency on a Lambert surface (light per pixel without the
+ * colour, texture, glow (emissive), alpha, side and transparency on a Lambert surface (light per pixel without the
  * physically based highlight), or for a shiny or metal one (roughness under 0.45 or metalness 0.4 and
  * over) on a Phong surface with a highlight as sharp as it is smooth, so steel still glints. The
  * texture is shared, not copied.
@@ -270,6 +270,9 @@ export function cheaperMaterial(m: MeshStandardMaterial): MeshLambertMaterial | 
     transparent: m.transparent,
     opacity: m.opacity,
     depthWrite: m.depthWrite,
+    emissive: m.emissive.clone(),
+    emissiveMap: m.emissiveMap,
+    emissiveIntensity: m.emissiveIntensity,
   };
   if (m.roughness < 0.45 || m.metalness >= 0.4)
     return new MeshPhongMaterial({ ...common, shininess: 8 + 80 * (1 - m.roughness) ** 2, specular: 0x555555 });

@@ -123,6 +123,7 @@ import {
   type WreckingBallHandles,
   wreckingBallWorldOptions,
 } from './scene';
+import { clearRuleLine, playStatusLine } from './status';
 
 /** Whether the page is taller than wide (a phone held upright): the camera frames a nearer view. */
 const PORTRAIT = window.innerHeight > window.innerWidth;
@@ -179,10 +180,12 @@ let cleared = false;
  * cleared once the collapse that reached its target has settled (see gameStep); nothing changes
  * its score after that.
  */
-const clearedWith: { swings: number; stars: number; tapped: boolean; score: ClearScore } = {
+const clearedWith: { swings: number; stars: number; tapped: boolean; score: ClearScore; standing: number } = {
   swings: 0,
   stars: 0,
   tapped: false,
+  /** Pieces still standing when the result was given (the banner's last line: fixed, as the result is). */
+  standing: 0,
   score: clearScore(0, 0),
 };
 /** Smoothed step time, ms (exponential average over ~30 steps), and the worst of the last second. */
@@ -280,6 +283,7 @@ function gameStep(world: PhysicsWorld): void {
     cleared = true;
     clearedWith.swings = reachedWith;
     clearedWith.stars = swingStars(clearedWith.swings, true, handles.level);
+    clearedWith.standing = handles.pieces.length - fallenCount(handles.pieces);
     sound.chime(1046, 0.6);
     // The clear bonus and one for each star (fewer swings), said part by part in the banner.
     clearedWith.score = clearScore(levelScore, clearedWith.stars);
@@ -870,85 +874,48 @@ function latticeTexture(repeatAlong: number, alongX: boolean): CanvasTexture {
   t.colorSpace = SRGBColorSpace;
   return t;
 }
+/**
+ * The lattices' alpha test (jib, apex, mast). The texture's bars cover about a third of a panel, so
+ * its smaller mipmaps average to an alpha near 0.3: at 0.5 a jib seen end-on or far off (drawn from
+ * those mipmaps) lost its bars and broke up into loose dots, a see-through ghost of a jib; at 0.25
+ * it is drawn whole there (a solid beam, as a far lattice looks) and the near bars are as before.
+ */
+const LATTICE_ALPHA_TEST = 0.25;
 const JIB_LENGTH = RADIUS_RANGE[1] + 4;
 /** How far the jib reaches out from the mast, m (it reaches 2 m back). */
 const JIB_LENGTH_OUT = JIB_LENGTH - 2;
+/**
+ * How much the crane's lattice (jib and mast) glows in its own yellow: its faces turned from the sun
+ * stay the mast's yellow rather than going olive, so the jib seen from below reads as the same steel
+ * as the mast, one crane (unlit, the jib's underside drew dark and read as a second crane).
+ */
+const CRANE_GLOW = 0.45;
 const jibMaterial = new MeshStandardMaterial({
   color: COLORS.mast,
   roughness: 0.6,
   metalness: 0.2,
   map: latticeTexture(JIB_LENGTH / 0.55, true),
-  alphaTest: 0.5,
+  alphaTest: LATTICE_ALPHA_TEST,
   transparent: false,
   side: DoubleSide,
+  emissive: COLORS.mast,
+  emissiveIntensity: CRANE_GLOW,
 });
 // Alpha from the texture's own brightness: the lattice's bars opaque, the panels clear.
 jibMaterial.alphaMap = jibMaterial.map;
+jibMaterial.emissiveMap = jibMaterial.map;
 const jib = new Mesh<BoxGeometry, Material>(new BoxGeometry(JIB_LENGTH, 0.55, 0.55), jibMaterial);
 jib.castShadow = true;
+// Solid whichever way it points and whatever it crosses on the screen: its lattice's open panels
+// show the pieces behind it. (Drawn faded where it crossed a standing piece, it read to a stranger
+// as a see-through ghost of the jib hanging over the targets.)
 app.scene.add(jib);
-/**
- * The jib's opacity while it is drawn over a standing piece (`jibOverSite`): the pieces show through
- * its open panels and, dimmed, through its bars. At 0.35 the faint lattice read as a ghost of the
- * crane's frame beside its own shadow on the ground; at 0.65 it reads as the jib.
- */
-const JIB_FADED = 0.65;
-/** How near (in the screen's half heights) a standing piece's centre is drawn to the jib's line to count as under it. */
-const JIB_COVER = 0.1;
-const jibPoint = new Vector3();
-/** The jib's axis on the screen, x (times the aspect) and y pairs (see jibOverSite). */
-const jibLine: number[] = [];
-/**
- * Whether the jib, slewed to the angle of cosine `ca` and sine `sa`, is drawn over a standing piece:
- * a piece's centre drawn within JIB_COVER of its axis (2 m back of the mast to its tip) on the
- * screen. Slewed to a target between the mast and the camera, the jib hung across the view and hid
- * the structure; then it is drawn faded (JIB_FADED), solid otherwise.
- */
-function jibOverSite(ca: number, sa: number): boolean {
-  const aspect = app.camera.aspect;
-  jibLine.length = 0;
-  for (let i = 0; i <= 8; i++) {
-    const d = -2 + (i / 8) * JIB_LENGTH;
-    jibPoint.set(d * ca, JIB_HEIGHT + 0.2, -d * sa).project(app.camera);
-    if (jibPoint.z < 1) jibLine.push(jibPoint.x * aspect, jibPoint.y);
-  }
-  const P = shell.world.components.Position;
-  for (const p of handles.pieces) {
-    if (p.fallen || !isAlive(shell.world, p.body)) continue;
-    jibPoint.set(P.x[p.body]!, P.y[p.body]!, P.z[p.body]!).project(app.camera);
-    if (jibPoint.z > 1 || Math.abs(jibPoint.x) > 1 || Math.abs(jibPoint.y) > 1) continue;
-    const px = jibPoint.x * aspect,
-      py = jibPoint.y;
-    for (let k = 0; k + 3 < jibLine.length; k += 2) {
-      const ax = jibLine[k]!,
-        ay = jibLine[k + 1]!,
-        bx = jibLine[k + 2]! - ax,
-        by = jibLine[k + 3]! - ay;
-      const t = Math.min(1, Math.max(0, ((px - ax) * bx + (py - ay) * by) / (bx * bx + by * by || 1)));
-      if (Math.hypot(px - ax - t * bx, py - ay - t * by) < JIB_COVER) return true;
-    }
-  }
-  return false;
-}
-/** Draws the jib faded while it is over a standing piece (`jibOverSite`), solid otherwise. */
-function fadeJib(ca: number, sa: number): void {
-  const faded = jibOverSite(ca, sa);
-  const m = jib.material;
-  if (m.transparent === faded) return;
-  m.transparent = faded;
-  m.opacity = faded ? JIB_FADED : 1;
-  // The lattice's alpha test compares its alpha times the opacity: at the solid jib's threshold
-  // every fragment of the faded jib was cut and it vanished (the cable hung from empty sky).
-  m.alphaTest = faded ? m.alphaTest * JIB_FADED : m.alphaTest / JIB_FADED;
-  m.depthWrite = !faded;
-  m.needsUpdate = true;
-}
 // The counter-jib's concrete counterweight and the operator's cab at the top of the mast, turning with the jib.
 const counterweight = new Mesh(new BoxGeometry(1.2, 1.1, 1.0), new MeshStandardMaterial({ color: 0x8d8f94, roughness: 0.9 }));
-counterweight.castShadow = true;
+// Neither it nor the cab casts a shadow: 11 m up, the sun put their squares 6 m from the crane's
+// foot, dark patches on the ground among the targets with nothing over them in the view.
 app.scene.add(counterweight);
 const cab = new Mesh(new BoxGeometry(0.9, 0.8, 0.9), new MeshStandardMaterial({ color: 0xe8eef4, roughness: 0.5, metalness: 0.1 }));
-cab.castShadow = true;
 app.scene.add(cab);
 // The mast drawn as a lattice over the physics' box (which the renderer draws in the same colour).
 const mastLattice = new Mesh(
@@ -958,11 +925,14 @@ const mastLattice = new Mesh(
     roughness: 0.6,
     metalness: 0.2,
     map: latticeTexture(JIB_HEIGHT / 0.82, false),
-    alphaTest: 0.5,
+    alphaTest: LATTICE_ALPHA_TEST,
     side: DoubleSide,
+    emissive: COLORS.mast,
+    emissiveIntensity: CRANE_GLOW,
   }),
 );
 (mastLattice.material as MeshStandardMaterial).alphaMap = (mastLattice.material as MeshStandardMaterial).map;
+(mastLattice.material as MeshStandardMaterial).emissiveMap = (mastLattice.material as MeshStandardMaterial).map;
 mastLattice.position.set(0, JIB_HEIGHT / 2, 0);
 mastLattice.castShadow = true;
 app.scene.add(mastLattice);
@@ -1028,7 +998,17 @@ app.scene.add(skyline);
 // The crane's top: an apex over the mast (a four-sided lattice pyramid turning with the jib) and the
 // tie bars from its tip to the jib two thirds out and to the counter-jib's end (drawn each frame).
 const APEX_HEIGHT = 2.4;
-const apex = new Mesh(new ConeGeometry(0.55, APEX_HEIGHT, 4, 1, true), jibMaterial);
+/**
+ * The apex's lattice: one panel a side, three up (the cone's u runs round its 4 sides, v up it). In
+ * the jib's material, 27 panels round it, its bars were a few texels wide and most fell under the
+ * alpha test once drawn small: a cloud of loose yellow dots over the crane.
+ */
+const apexMaterial = jibMaterial.clone();
+apexMaterial.map = latticeTexture(4, true);
+apexMaterial.map.repeat.set(4, 3);
+apexMaterial.alphaMap = apexMaterial.map;
+apexMaterial.emissiveMap = apexMaterial.map;
+const apex = new Mesh(new ConeGeometry(0.55, APEX_HEIGHT, 4, 1, true), apexMaterial);
 apex.position.set(0, JIB_HEIGHT + 0.45 + APEX_HEIGHT / 2, 0);
 apex.castShadow = true;
 app.scene.add(apex);
@@ -2225,11 +2205,13 @@ function clearedLine(): string {
   return `Level ${handles.level} cleared in ${swings} ${swings === 1 ? 'swing' : 'swings'}! ${'★'.repeat(stars)}${'☆'.repeat(3 - stars)}`;
 }
 /**
- * The banner under the result: where the score's jump at the clear came from, and how the stars
- * are earned ("blocks 396 + clear 500 + ★★ 500 = 1396" and "★★★ in 2 swings · ★★ in 3 · ★ in 4–5").
+ * The banner under the result: where the score's jump at the clear came from, how the stars
+ * are earned ("blocks 396 + clear 500 + ★★ 500 = 1396" and "★★★ in 2 swings · ★★ in 3 · ★ in 4–5"),
+ * and what the clear asked, with the pieces left standing (./status clearRuleLine).
  */
 function clearedBanner(): string {
-  return `${clearedLine()}\n${clearScoreLine(clearedWith.score, clearedWith.stars)}\n${starsRule(handles.level)}`;
+  const rule = clearRuleLine(handles.level, clearTarget(handles.pieces, handles.level), clearedWith.standing);
+  return `${clearedLine()}\n${clearScoreLine(clearedWith.score, clearedWith.stars)}\n${starsRule(handles.level)}\n${rule}`;
 }
 /** Whether the level's swings are all used and it is not cleared (a swing is refused). */
 function outOfSwings(): boolean {
@@ -2471,26 +2453,17 @@ function placeGroundShadows(): void {
     if (!half || !renderer.drawnPosition(p.body, shadowAt)) continue;
     groundShadows.add(shadowAt[0]!, shadowAt[1]!, shadowAt[2]!, O.x[p.body]!, O.y[p.body]!, O.z[p.body]!, O.w[p.body]!, half);
   }
-  // The mast, narrower than its box (a lattice lets light through), the counterweight and the cab.
-  // Not the jib: flattened as a solid strip its shadow would be a thin dark line 15 m long across the
-  // site, read as a cable on the ground (its lattice lets most of the light through).
+  // The mast, narrower than its box (a lattice lets light through). Not the jib: flattened as a solid
+  // strip its shadow would be a thin dark line 15 m long across the site, read as a cable on the
+  // ground (its lattice lets most of the light through); nor the counterweight and the cab (see
+  // their meshes: square dark patches among the targets).
   groundShadows.add(0, JIB_HEIGHT / 2, 0, 0, 0, 0, 1, MAST_SHADOW_HALF);
-  for (const [mesh, half] of craneShadows) {
-    mesh.updateMatrix();
-    groundShadows.addBox(shadowBox.makeScale(half[0], half[1], half[2]).premultiply(mesh.matrix));
-  }
   const ball = renderer.drawnPosition(handles.ball, shadowAt);
   if (ball) groundShadows.end(shadowAt[0]!, shadowAt[1]!, shadowAt[2]!, BALL_RADIUS);
   else groundShadows.end(0, -100, 0, 0);
 }
 /** Half extents, m, of the mast's shadow-casting box (see placeGroundShadows). */
 const MAST_SHADOW_HALF: [number, number, number] = [0.22, JIB_HEIGHT / 2, 0.22];
-/** The crane's parts at the mast's top that cast ground shadows, and their boxes' half extents in their own frames, m. */
-const craneShadows: Array<[Mesh, [number, number, number]]> = [
-  [counterweight, [0.6, 0.55, 0.5]],
-  [cab, [0.45, 0.4, 0.45]],
-];
-const shadowBox = new Matrix4();
 /** The pixel ratio the app chose (0.5 under software WebGL, else the device's up to 2). */
 const startPixelRatio = app.renderer.getPixelRatio();
 /**
@@ -2986,7 +2959,6 @@ function frame(): void {
   const mid = (RADIUS_RANGE[1] + 2 - 2) / 2;
   jib.position.set(mid * ca, JIB_HEIGHT + 0.2, -mid * sa);
   jib.rotation.set(0, c.angle, 0);
-  fadeJib(ca, sa);
   counterweight.position.set(-2.6 * ca, JIB_HEIGHT - 0.35, 2.6 * sa);
   counterweight.rotation.set(0, c.angle, 0);
   placeTies(c.angle);
@@ -3049,18 +3021,32 @@ function frame(): void {
   trackNearest();
   if (runEndedAt >= 0 && shell.world.time - runEndedAt > 1.5) countResult();
   if (frames++ % 6 === 0) {
-    const n = handles.pieces.length,
-      f = fallenCount(handles.pieces);
+    const f = fallenCount(handles.pieces);
     const budget = swingBudget(handles.level);
     const used = swingsUsed(),
       left = budget - used;
     status.textContent = cleared
       ? `${clearedLine()} · final score ${banked + levelScore} · ${touch ? 'tap' : 'press L or'} Level ${handles.level + 1} ▶`
       : reachedAt >= 0
-        ? `Level ${handles.level} · target reached! · down ${f}/${n} · score ${banked + levelScore} (counting the fall${falling > 0 ? `: ${falling} still moving` : ''})`
-        : `Level ${handles.level}${scoreOnStatus()} · swings left ${left}/${budget} (★★★ in ${swingPar(handles.level)}) · down ${f}/${n} (clear at ${clearTarget(handles.pieces, handles.level)})${swingPhase()}${
-            swing.result && shell.world.time - swing.resultAt < RESULT_SHOWN ? ` · ${swing.result}` : ''
-          }${left <= 0 && handles.controls.moves.length === 0 ? ` · out of swings: ${touch ? 'tap ↻' : 'press R'} to retry` : ''}${swayHint()}`;
+        ? `Level ${handles.level} · target reached! · down ${f}, ${clearTarget(handles.pieces, handles.level)} clear it · score ${banked + levelScore} (counting the fall${falling > 0 ? `: ${falling} still moving` : ''})`
+        : playStatusLine(
+            {
+              level: handles.level,
+              score: pageLayout().compact() ? banked + levelScore : null,
+              left,
+              budget,
+              par: swingPar(handles.level),
+              fallen: f,
+              target: clearTarget(handles.pieces, handles.level),
+              extras: [
+                swingPhase(),
+                swing.result && shell.world.time - swing.resultAt < RESULT_SHOWN ? ` · ${swing.result}` : '',
+                left <= 0 && handles.controls.moves.length === 0 ? ` · out of swings: ${touch ? 'tap ↻' : 'press R'} to retry` : '',
+                swayHint(),
+              ],
+            },
+            pageLayout().compact(),
+          );
     showNext(cleared, `Level ${handles.level + 1} ▶`);
     const text = hintText();
     showHint(text, cleared);
@@ -3076,14 +3062,6 @@ function frame(): void {
       ? `score ${banked + levelScore} · step ${stepMs.toFixed(1)} ms (worst ${worstMs.toFixed(1)}) · ${handles.pieces.length} pieces`
       : `score ${banked + levelScore}`;
   }
-}
-
-/**
- * The score on the status line (' · score N') on a small screen, where the side column that shows it
- * (`readout`) is in the ☰ drawer; '' on a large one, where that column is in sight.
- */
-function scoreOnStatus(): string {
-  return pageLayout().compact() ? ` · score ${banked + levelScore}` : '';
 }
 
 /** Swing amplitude, m, over which the status line tells a player driving the crane how to stop it. */
@@ -3126,16 +3104,17 @@ function timeToHit(moves: readonly { duration: number; elapsed: number; follow?:
 
 shell.expose({
   /**
-   * Whether the jib is drawn solid (opaque, writing depth), as it is whichever way it points but
-   * over a standing piece on the screen (`jibOverSite`): its lattice's open panels show what lies
-   * behind it (drawn faded whenever it pointed toward the camera, it looked ghostly).
+   * Whether the jib is drawn solid (opaque, writing depth), as it is whichever way it points and
+   * whatever it crosses on the screen: its lattice's open panels show what lies behind it.
    */
   jibSolid: (): boolean => !jib.material.transparent && jib.material.opacity === 1 && jib.material.depthWrite,
-  /**
-   * Whether the jib's lattice bars are drawn at all: their alpha (1) times the material's opacity
-   * passes its alpha test (faded at the solid jib's test, every fragment was cut).
-   */
+  /** Whether the jib's lattice bars are drawn at all: their alpha (1) times the material's opacity passes its alpha test. */
   jibShows: (): boolean => jib.material.opacity > jib.material.alphaTest,
+  /**
+   * How many boxes cast the lite quality's flattened ground shadows this frame (placeGroundShadows):
+   * the pieces and the mast; 0 while drawn full (the sun's shadow map instead).
+   */
+  groundShadowBoxes: (): number => (groundShadows.visible ? groundShadows.boxes.count : 0),
   /** The camera's orbit target, m (it follows the ball; see followAction). */
   cameraTarget: (): number[] => (app.controls ? app.controls.target.toArray() : []),
   /** The orbit target of the site's framing the camera returns to, m (null once the player has moved the camera). */
