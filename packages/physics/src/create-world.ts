@@ -36,6 +36,7 @@ import {
   assertOptions,
   assertVector,
   describe,
+  optionOr,
 } from './validation/validate.js';
 import { createClothState } from './world/cloth-state.js';
 import { COMPONENT_DEFAULTS } from './world/component-defaults.js';
@@ -109,8 +110,7 @@ export function createPhysicsWorld(options: PhysicsWorldOptions = {}): PhysicsWo
   if (dimensions !== 2 && dimensions !== 3) {
     throw new RangeError(`${where}: dimensions must be 2 or 3, got ${describe(dimensions)}`);
   }
-  const capacity = options.capacity ?? 10_000;
-  assertInteger(where, 'capacity', capacity, 1, MAX_CAPACITY);
+  const capacity = optionOr(where, 'capacity', options.capacity, 10_000, assertInteger, 1, MAX_CAPACITY);
   const gravity = new Float64Array(3);
   if (options.gravity !== undefined) {
     assertVector(where, 'gravity', options.gravity, dimensions);
@@ -120,28 +120,22 @@ export function createPhysicsWorld(options: PhysicsWorldOptions = {}): PhysicsWo
   }
   const dt = options.dt ?? 1 / 60;
   assertTimeStep(where, dt);
-  const substeps = options.substeps ?? 1;
-  assertInteger(where, 'substeps', substeps, 1, 64);
+  const substeps = optionOr(where, 'substeps', options.substeps, 1, assertInteger, 1, 64);
   const integrator = options.integrator ?? 'semi-implicit-euler';
   if (typeof integrator !== 'string' || !(INTEGRATOR_NAMES as readonly string[]).includes(integrator)) {
     throw new RangeError(
       `${where}: integrator must be one of ${INTEGRATOR_NAMES.map((n) => `'${n}'`).join(', ')}, got ${describe(integrator)}`,
     );
   }
-  const seed = options.seed ?? 1;
-  assertFinite(where, 'seed', seed);
-  const solverSubsteps = options.solverSubsteps ?? 4;
-  assertInteger(where, 'solverSubsteps', solverSubsteps, 1, 16);
-  const solverIterations = options.solverIterations ?? 1;
-  assertInteger(where, 'solverIterations', solverIterations, 1, 50);
-  const restitutionThreshold = options.restitutionThreshold ?? 0.5;
-  assertNonNegative(where, 'restitutionThreshold', restitutionThreshold);
+  const seed = optionOr(where, 'seed', options.seed, 1, assertFinite);
+  const solverSubsteps = optionOr(where, 'solverSubsteps', options.solverSubsteps, 4, assertInteger, 1, 16);
+  const solverIterations = optionOr(where, 'solverIterations', options.solverIterations, 1, assertInteger, 1, 50);
+  const restitutionThreshold = optionOr(where, 'restitutionThreshold', options.restitutionThreshold, 0.5, assertNonNegative);
   const interpolation = options.interpolation ?? true;
   assertBoolean(where, 'interpolation', interpolation);
   const sleep = options.sleep ?? true;
   assertBoolean(where, 'sleep', sleep);
-  const threads = options.threads ?? 1;
-  assertInteger(where, 'threads', threads, 1, 64);
+  const threads = optionOr(where, 'threads', options.threads, 1, assertInteger, 1, 64);
   // Made before anything else, so a missing SharedArrayBuffer or Worker throws before any allocation.
   const threadPool = threads > 1 ? makeThreadPool(where, threads) : null;
   const restitution = options.restitutionThreshold === undefined ? {} : { restitutionThreshold };

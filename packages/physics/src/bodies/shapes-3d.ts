@@ -254,8 +254,7 @@ export function addShape3D(world: PhysicsWorld, body: number, options: Shape3DOp
     rz = q[2]! / l;
     rw = q[3]! / l;
   }
-  const density = options.density ?? 1000;
-  check.assertNonNegative(where, 'density', density);
+  const density = check.optionOr(where, 'density', options.density, 1000, check.assertNonNegative);
   assertMaterial(where, options);
   assertFilter(where, options);
   const friction = options.friction ?? 0.6,

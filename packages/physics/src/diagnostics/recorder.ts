@@ -1,4 +1,4 @@
-import { assertInteger, assertOptions, describe } from '../validation/validate.js';
+import { assertInteger, assertOptions, describe, optionOr } from '../validation/validate.js';
 import type { PhysicsWorld } from '../world/options.js';
 
 /**
@@ -56,10 +56,8 @@ export function createRecorder(world: PhysicsWorld, options: RecorderOptions): R
     if (typeof f !== 'function') throw new TypeError(`${where}: quantity ${JSON.stringify(n)} must be a function, got ${describe(f)}`);
     return f;
   });
-  const every = options.every ?? 1;
-  assertInteger(where, 'every', every, 1, 1_000_000_000);
-  const cap = options.capacity ?? 10_000;
-  assertInteger(where, 'capacity', cap, 2, 100_000_000);
+  const every = optionOr(where, 'every', options.every, 1, assertInteger, 1, 1_000_000_000);
+  const cap = optionOr(where, 'capacity', options.capacity, 10_000, assertInteger, 2, 100_000_000);
   const data = [new Float64Array(cap), ...names.map(() => new Float64Array(cap))];
   let head = 0,
     count = 0;

@@ -1,5 +1,5 @@
 import { hasComponent } from 'bitecs';
-import { assertInRange, assertKnownKeys, assertNonNegative, assertPositive, describe } from '../validation/validate.js';
+import { assertInRange, assertKnownKeys, assertNonNegative, assertPositive, describe, optionOr } from '../validation/validate.js';
 import { resolveKind } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { addComponentIfMissing } from '../world/options.js';
@@ -75,8 +75,7 @@ export function setBallast(world: PhysicsWorld, body: number, options: BallastOp
   assertPositive(where, 'capacity', options.capacity);
   const fill = pair(where, 'fill', options.fill ?? 0);
   const target = options.target === undefined ? fill : pair(where, 'target', options.target);
-  const rate = options.rate ?? 0.1;
-  assertPositive(where, 'rate', rate);
+  const rate = optionOr(where, 'rate', options.rate, 0.1, assertPositive);
   const arm = options.arm ?? 0,
     gm = options.metacentricHeight ?? 0;
   assertNonNegative(where, 'arm', arm);

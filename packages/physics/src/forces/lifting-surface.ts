@@ -88,18 +88,13 @@ export function addLiftingSurface(world: PhysicsWorld, options: LiftingSurfaceOp
   if (Math.hypot(unit[1], unit[2]) < 1e-6)
     throw new RangeError(`${where}: normal must not lie along the chord (body x), got ${check.describe(normal)}`);
   check.assertPositive(where, 'area', options.area);
-  const slope = options.liftSlope ?? DEFAULT_LIFT_SLOPE;
-  check.assertNonNegative(where, 'liftSlope', slope);
+  const slope = check.optionOr(where, 'liftSlope', options.liftSlope, DEFAULT_LIFT_SLOPE, check.assertNonNegative);
   const stall = options.stallAngle ?? (20 * Math.PI) / 180;
   check.assertInRange(where, 'stallAngle', stall, 1e-6, Math.PI / 2 - 1e-6);
-  const cd0 = options.dragZero ?? 0.02;
-  check.assertNonNegative(where, 'dragZero', cd0);
-  const k = options.inducedDrag ?? 0.06;
-  check.assertNonNegative(where, 'inducedDrag', k);
-  const power = options.controlPower ?? 0;
-  check.assertNonNegative(where, 'controlPower', power);
-  const rho = options.airDensity ?? 1.225;
-  check.assertPositive(where, 'airDensity', rho);
+  const cd0 = check.optionOr(where, 'dragZero', options.dragZero, 0.02, check.assertNonNegative);
+  const k = check.optionOr(where, 'inducedDrag', options.inducedDrag, 0.06, check.assertNonNegative);
+  const power = check.optionOr(where, 'controlPower', options.controlPower, 0, check.assertNonNegative);
+  const rho = check.optionOr(where, 'airDensity', options.airDensity, 1.225, check.assertPositive);
   addComponentIfMissing(world, b, c.Force);
   addComponentIfMissing(world, b, c.Torque);
   if (!world.removeHooks.includes(removeSurfacesOf)) world.removeHooks.push(removeSurfacesOf);

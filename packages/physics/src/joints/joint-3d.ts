@@ -1,6 +1,6 @@
 import { install3D } from '../collision/install-3d.js';
 import { rotateVectorInverse } from '../math/quaternion.js';
-import { assertFinite, assertNonNegative, assertVector, describe } from '../validation/validate.js';
+import { assertFinite, assertNonNegative, assertVector, describe, optionOr } from '../validation/validate.js';
 import { createSlot, currentHandle, resolveEntity } from '../world/handles.js';
 import { addNoCollide } from '../world/joint-no-collide.js';
 import { ensureJointArrays } from '../world/joint-state-2d.js';
@@ -158,8 +158,7 @@ function limitAndMotor(
     out.upper = upper;
   }
   if (motorSpeed !== undefined || maxMotor !== undefined) {
-    const speed = motorSpeed ?? 0;
-    assertFinite(where, 'motorSpeed', speed);
+    const speed = optionOr(where, 'motorSpeed', motorSpeed, 0, assertFinite);
     if (maxMotor === undefined) throw new RangeError(`${where}: ${maxName} must be given with motorSpeed, got undefined`);
     assertNonNegative(where, maxName, maxMotor);
     out.motorSpeed = speed;

@@ -139,12 +139,9 @@ export function checkDistance<P extends [number, number] | [number, number, numb
   if (a === 0 && options.anchorA === undefined) throw new RangeError(`${where}: anchorA (a world point) is required when a is the world`);
   const pa = optionalPoint(where, 'anchorA', options.anchorA, centreA);
   const pb = optionalPoint(where, 'anchorB', options.anchorB, centreB);
-  const length = options.length ?? Math.hypot(...pb.map((v, i) => v - pa[i]!));
-  check.assertPositive(where, 'length', length);
-  const hertz = options.hertz ?? 0;
-  check.assertNonNegative(where, 'hertz', hertz);
-  const zeta = options.dampingRatio ?? 0;
-  check.assertNonNegative(where, 'dampingRatio', zeta);
+  const length = check.optionOr(where, 'length', options.length, Math.hypot(...pb.map((v, i) => v - pa[i]!)), check.assertPositive);
+  const hertz = check.optionOr(where, 'hertz', options.hertz, 0, check.assertNonNegative);
+  const zeta = check.optionOr(where, 'dampingRatio', options.dampingRatio, 0, check.assertNonNegative);
   const [minLength, maxLength] = lengthLimits(where, length, hertz > 0, options.minLength, options.maxLength);
   return { pa, pb, length, minLength, maxLength, hertz, zeta };
 }

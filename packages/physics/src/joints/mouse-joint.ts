@@ -1,6 +1,6 @@
 import { hasComponent } from 'bitecs';
 import * as BS from '../solver/body-state-layout.js';
-import { assertNonNegative, assertOptions, assertPositive, assertVector, describe } from '../validation/validate.js';
+import { assertNonNegative, assertOptions, assertPositive, assertVector, describe, optionOr } from '../validation/validate.js';
 import { currentHandle } from '../world/handles.js';
 import type { JointState } from '../world/joint-state-2d.js';
 import { JointFlag, type JointStore, JointType } from '../world/joint-store-2d.js';
@@ -62,12 +62,9 @@ export function addMouseJoint(world: PhysicsWorld, options: MouseJointOptions): 
   }
   const p = optionalPoint(where, 'anchor', options.anchor, centre(world, ends.b));
   const target = optionalPoint(where, 'target', options.target, p);
-  const hertz = options.hertz ?? 5;
-  assertPositive(where, 'hertz', hertz);
-  const zeta = options.dampingRatio ?? 0.7;
-  assertNonNegative(where, 'dampingRatio', zeta);
-  const maxForce = options.maxForce ?? 1000 * world.components.Mass.value[ends.b]!;
-  assertPositive(where, 'maxForce', maxForce);
+  const hertz = optionOr(where, 'hertz', options.hertz, 5, assertPositive);
+  const zeta = optionOr(where, 'dampingRatio', options.dampingRatio, 0.7, assertNonNegative);
+  const maxForce = optionOr(where, 'maxForce', options.maxForce, 1000 * world.components.Mass.value[ends.b]!, assertPositive);
   const j = makeJoint(world, JointType.Mouse, ends, target, p, { b: ends.b, breakForce: options.breakForce });
   const J = world.components.Joint;
   J.hertz[j] = hertz;

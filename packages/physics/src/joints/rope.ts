@@ -58,14 +58,10 @@ export function createRope(world: PhysicsWorld, options: RopeOptions): Rope {
   check.assertOptions(where, options, ['start', 'end', 'segments', 'mass', 'radius', 'pinStart', 'pinEnd', 'slack', 'drag', 'breakForce']);
   check.assertVector(where, 'start', options.start, 2);
   check.assertVector(where, 'end', options.end, 2);
-  const n = options.segments ?? 20;
-  check.assertInteger(where, 'segments', n, 1, 10000);
-  const mass = options.mass ?? 1;
-  check.assertPositive(where, 'mass', mass);
-  const radius = options.radius ?? 0;
-  check.assertNonNegative(where, 'radius', radius);
-  const drag = options.drag ?? 0;
-  check.assertNonNegative(where, 'drag', drag);
+  const n = check.optionOr(where, 'segments', options.segments, 20, check.assertInteger, 1, 10000);
+  const mass = check.optionOr(where, 'mass', options.mass, 1, check.assertPositive);
+  const radius = check.optionOr(where, 'radius', options.radius, 0, check.assertNonNegative);
+  const drag = check.optionOr(where, 'drag', options.drag, 0, check.assertNonNegative);
   if (options.breakForce !== undefined && options.breakForce !== Infinity) check.assertPositive(where, 'breakForce', options.breakForce);
   const x0 = options.start[0]!,
     y0 = options.start[1]!,

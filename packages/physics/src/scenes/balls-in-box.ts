@@ -1,5 +1,5 @@
 import { Rng } from '../math/rng.js';
-import { assertInRange, assertNonNegative, assertPositive } from '../validation/validate.js';
+import { assertInRange, assertNonNegative, assertPositive, optionOr } from '../validation/validate.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { addBallsInBox } from './cubes.js';
 import { countAndSeed } from './options.js';
@@ -61,17 +61,12 @@ const OPTIONS = ['count', 'seed', 'radius', 'spacing', 'restitution', 'friction'
 export function ballsInBoxLayout(options: BallsInBoxOptions = {}): BallsInBoxLayout {
   const where = 'balls-in-box';
   const { count, seed } = countAndSeed(where, options, OPTIONS, 1000, 1, 10_000_000);
-  const radius = options.radius ?? 0.5;
-  assertPositive(where, 'radius', radius);
-  const spacing = options.spacing ?? 1.5;
-  assertPositive(where, 'spacing', spacing);
+  const radius = optionOr(where, 'radius', options.radius, 0.5, assertPositive);
+  const spacing = optionOr(where, 'spacing', options.spacing, 1.5, assertPositive);
   if (!(spacing > 2 * radius)) throw new RangeError(`${where}: spacing must exceed 2 radius (${2 * radius}), got ${spacing}`);
-  const restitution = options.restitution ?? 0.5;
-  assertInRange(where, 'restitution', restitution, 0, 1);
-  const friction = options.friction ?? 0.1;
-  assertNonNegative(where, 'friction', friction);
-  const mass = options.mass ?? 1;
-  assertPositive(where, 'mass', mass);
+  const restitution = optionOr(where, 'restitution', options.restitution, 0.5, assertInRange, 0, 1);
+  const friction = optionOr(where, 'friction', options.friction, 0.1, assertNonNegative);
+  const mass = optionOr(where, 'mass', options.mass, 1, assertPositive);
 
   const columns = Math.max(1, Math.ceil(2 * Math.sqrt(count)));
   const rows = Math.ceil(count / columns);

@@ -2,7 +2,7 @@ import { addBody } from '../bodies/api.js';
 import { enableMutualGravity } from '../forces/api.js';
 import { setGravitation } from '../forces/configure.js';
 import { Rng } from '../math/rng.js';
-import { assertPositive } from '../validation/validate.js';
+import { assertPositive, optionOr } from '../validation/validate.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { countAndSeed } from './options.js';
 import type { SceneDefinition } from './types.js';
@@ -42,8 +42,7 @@ export const galaxy: SceneDefinition<GalaxyOptions, { stars: Uint32Array; nucleu
     const where = 'galaxy';
     if (world.dimensions !== 2) throw new RangeError(`${where}: needs a 2D world, got dimensions ${world.dimensions}`);
     const { count, seed } = countAndSeed(where, options, ['count', 'seed', 'openingAngle', 'method'], 100_000, 1, 2_000_000);
-    const theta = options.openingAngle ?? 0.5;
-    assertPositive(where, 'openingAngle', theta);
+    const theta = optionOr(where, 'openingAngle', options.openingAngle, 0.5, assertPositive);
     const method = options.method ?? 'barnes-hut';
     setGravitation(world, { constant: 1, softening: 0.3, method, openingAngle: theta });
     const rng = new Rng(seed);

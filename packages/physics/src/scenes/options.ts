@@ -1,4 +1,4 @@
-import { assertFinite, assertInteger, assertKnownKeys } from '../validation/validate.js';
+import { assertFinite, assertInteger, assertKnownKeys, optionOr } from '../validation/validate.js';
 
 /**
  * The options every scene takes, checked: `options` holds no key outside `keys`, `count` (default
@@ -15,9 +15,7 @@ export function countAndSeed(
   max: number,
 ): { count: number; seed: number } {
   assertKnownKeys(where, options, keys);
-  const count = options.count ?? defaultCount;
-  assertInteger(where, 'count', count, min, max);
-  const seed = options.seed ?? 1;
-  assertFinite(where, 'seed', seed);
+  const count = optionOr(where, 'count', options.count, defaultCount, assertInteger, min, max);
+  const seed = optionOr(where, 'seed', options.seed, 1, assertFinite);
   return { count, seed };
 }

@@ -1,5 +1,5 @@
 import { addPlane } from '../bodies/rigid.js';
-import { assertInteger, assertKnownKeys } from '../validation/validate.js';
+import { assertInteger, assertKnownKeys, optionOr } from '../validation/validate.js';
 import { slotOf } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import { addCubes } from './cubes.js';
@@ -50,8 +50,7 @@ export interface Pyramid3DLayout {
  */
 export function pyramid3DLayout(options: Pyramid3DOptions = {}): Pyramid3DLayout {
   assertKnownKeys('pyramid-3d', options, ['count', 'seed']);
-  const base = options.count ?? 20;
-  assertInteger('pyramid-3d', 'count', base, 1, 60);
+  const base = optionOr('pyramid-3d', 'count', options.count, 20, assertInteger, 1, 60);
   const count = (base * (base + 1) * (2 * base + 1)) / 6;
   const pitch = 1.05,
     half = 0.5;

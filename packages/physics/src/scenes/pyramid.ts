@@ -1,5 +1,5 @@
 import { addBox } from '../bodies/shapes-2d.js';
-import { assertInteger } from '../validation/validate.js';
+import { assertInteger, optionOr } from '../validation/validate.js';
 import { slotOf } from '../world/handles.js';
 import type { PhysicsWorld } from '../world/options.js';
 import type { SceneDefinition } from './types.js';
@@ -50,8 +50,7 @@ export interface PyramidLayout {
  * @category Scenes
  */
 export function pyramidLayout(options: PyramidOptions = {}): PyramidLayout {
-  const base = options.count ?? 40;
-  assertInteger('pyramid', 'count', base, 1, 1000);
+  const base = optionOr('pyramid', 'count', options.count, 40, assertInteger, 1, 1000);
   const count = (base * (base + 1)) / 2;
   const pitch = 1.05,
     half = 0.5;

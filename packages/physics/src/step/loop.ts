@@ -1,4 +1,4 @@
-import { assertInteger, assertOptions, assertPositive } from '../validation/validate.js';
+import { assertInteger, assertOptions, assertPositive, optionOr } from '../validation/validate.js';
 
 /**
  * Options of `createFixedStepLoop`.
@@ -60,10 +60,8 @@ export function createFixedStepLoop(options: FixedStepLoopOptions): FixedStepLoo
   assertOptions(where, options, ['dt', 'step', 'maxFrameTime', 'maxStepsPerFrame']);
   assertPositive(where, 'dt', options.dt);
   if (typeof options.step !== 'function') throw new TypeError(`${where}: step must be a function`);
-  const maxFrameTime = options.maxFrameTime ?? 0.25;
-  assertPositive(where, 'maxFrameTime', maxFrameTime);
-  const maxSteps = options.maxStepsPerFrame ?? 8;
-  assertInteger(where, 'maxStepsPerFrame', maxSteps, 1, 1_000_000);
+  const maxFrameTime = optionOr(where, 'maxFrameTime', options.maxFrameTime, 0.25, assertPositive);
+  const maxSteps = optionOr(where, 'maxStepsPerFrame', options.maxStepsPerFrame, 8, assertInteger, 1, 1_000_000);
   const dt = options.dt;
   const stepFn = options.step;
   let acc = 0;

@@ -99,6 +99,27 @@ export function assertInteger(where: string, param: string, value: unknown, min:
 }
 
 /**
+ * An option's number: `value`, or `fallback` where it is undefined or null, once `assert` (one of the
+ * checks above: assertFinite, assertPositive, assertNonNegative, or assertInRange and assertInteger
+ * with `min` and `max`) has passed it. @throws as `assert`.
+ * @category Utilities
+ */
+export function optionOr(
+  where: string,
+  param: string,
+  value: unknown,
+  fallback: number,
+  assert: (where: string, param: string, value: unknown, min: number, max: number) => void,
+  min = -Infinity,
+  max = Infinity,
+): number {
+  const v = value ?? fallback;
+  assert(where, param, v, min, max);
+  // Each assert throws unless v is a finite number.
+  return v as number;
+}
+
+/**
  * Throws unless `value` is a boolean (`true` or `false`, not truthy or falsy). @throws TypeError
  * @category Utilities
  */
