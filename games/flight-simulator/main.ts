@@ -37,7 +37,7 @@
  * camera sits close behind and widens its view with speed, so the speed shows.
  * Keys: arrows or W/S/A/D: climb / dive and bank (with "pilot's pitch" in the panel, down pulls up),
  * ramped (./assist.ts rampKey: a tap is a small correction; climb and dive grow slowly at first to full
- * stick after 0.4 s held, the bank keys start at 0.2 of full stick (BANK_KEY_RAMP) and are full after 1.2 s);
+ * stick after 0.4 s held, the bank keys start at 0.2 of full stick (BANK_KEY_RAMP) and grow about evenly to full after 1.1 s);
  * Q / E: rudder; X / Z (or Shift, + / -): faster / slower (the throttle: the only input that moves it;
  * a press steps it a tenth at once, held it goes on: ./assist.ts throttleStep; no Ctrl, which with W
  * closes the browser's tab);
