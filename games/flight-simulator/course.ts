@@ -39,9 +39,20 @@ export const PASS_RADIUS = RING_RADIUS + RING_TUBE;
  */
 export const CLEAR_RADIUS = RING_RADIUS - 2 * AIRCRAFT.wingHalfOffset;
 
-/** Whether a path meeting a ring's plane `offset` m from its centre (Infinity: not at all) takes the whole aircraft through it: offset < CLEAR_RADIUS. */
-export function clearThrough(offset: number): boolean {
-  return offset < CLEAR_RADIUS;
+/**
+ * How far inside CLEAR_RADIUS the marker must come before it turns green, m (`clearThrough`): once
+ * let go, the path drifts a few metres from the one predicted, and a marker that turned green at
+ * CLEAR_RADIUS went back and forth across it, the tip with it ("let go", "steer left", "let go").
+ */
+export const CLEAR_MARGIN = 5;
+
+/**
+ * Whether a path meeting a ring's plane `offset` m from its centre (Infinity: not at all) takes the
+ * whole aircraft through it: offset < CLEAR_RADIUS while it did (`was`, default true), and under
+ * CLEAR_RADIUS - CLEAR_MARGIN to become so. Never beyond CLEAR_RADIUS.
+ */
+export function clearThrough(offset: number, was = true): boolean {
+  return offset < CLEAR_RADIUS - (was ? 0 : CLEAR_MARGIN);
 }
 
 /** A crossing of a ring's plane farther than this from its centre, m, is not counted (the pilot is elsewhere). */

@@ -1609,11 +1609,12 @@ function lessonTip(): string {
   if ((i === 0 && !holding) || shell.world.time >= tipGoneAt) return '';
   const reader = { touch: touchFirst, compact, pilotPitch: params.pilotPitch };
   // After the lessons the coach says where each ring lies and what to do, to the last (./coach.ts).
-  if (i >= LESSON_RINGS) return courseTipText(i, rings.length, spokenWay(i), reader, pathAim.visible ? pathAim.offset : Infinity);
+  if (i >= LESSON_RINGS)
+    return courseTipText(i, rings.length, spokenWay(i), reader, pathAim.visible && pathAim.inside ? pathAim.offset : Infinity);
   // A lesson's "straight ahead: let go" only when letting go flies the aircraft through (the line
   // flown now can point at the ring while the turn still in it carries the path off: then the
   // marker's way, which names where to steer).
-  const through = !tipWay.side && !tipWay.up && markedAt && !clearThrough(pathAim.offset);
+  const through = !tipWay.side && !tipWay.up && markedAt && !pathAim.inside;
   return lessonTipText(i, through ? ringWay(markerBearing(rings[i]!, markedAt!)) : tipWay, reader);
 }
 
@@ -1858,10 +1859,10 @@ marker.dataset.hud = 'path-marker';
 }
 /**
  * What the marker shows (tests): visible, inside the next ring, its offset from the ring's centre
- * (m), its place (px), and the game time of the drawn frame that placed it last (s; frames the pacer
- * does not draw leave it where it was).
+ * (m), its place (px), the game time of the drawn frame that placed it last (s; frames the pacer
+ * does not draw leave it where it was) and the ring it was placed for.
  */
-const pathAim = { visible: false, inside: false, offset: Infinity, x: 0, y: 0, drawnAt: -1 };
+const pathAim = { visible: false, inside: false, offset: Infinity, x: 0, y: 0, drawnAt: -1, ring: -1 };
 const markAt = new Vector3();
 /** Where the marker shows the aircraft passing the next ring's plane (m, world), or null when it shows none. */
 let markedAt: readonly number[] | null = null;
@@ -1883,12 +1884,16 @@ function markPath(): void {
   markedAt = pathAim.visible && through ? through.point : null;
   marker.style.display = pathAim.visible ? 'block' : 'none';
   promise.ring = -1;
+  // Green stays green while it holds (./course.ts CLEAR_MARGIN), for the same ring only.
+  const was = pathAim.inside && pathAim.ring === i;
+  pathAim.ring = i;
+  pathAim.inside = false;
   if (!through || !pathAim.visible) return;
   pathAim.offset = through.offset;
   // Green, and a promise kept (`promise`), only where the whole aircraft goes through (./course.ts
   // clearThrough: the ring less half the wingspan), as the coach's "let go" (a marker green on the
   // tube, with a wing through it, drifted out as the path settled and the ring was missed).
-  pathAim.inside = clearThrough(through.offset);
+  pathAim.inside = clearThrough(through.offset, was);
   if (pathAim.inside) {
     promise.ring = i;
     promise.at = world.time;

@@ -15,7 +15,9 @@ import { describe, expect, it } from 'vitest';
 import { AILERON_SCALE, ASSIST, assist, CONTROL_AUTHORITY, createAssistState, flightState } from '../../games/flight-simulator/assist';
 import { courseTipText, LESSON_RINGS, markerBearing } from '../../games/flight-simulator/coach';
 import {
+  CLEAR_MARGIN,
   CLEAR_RADIUS,
+  clearThrough,
   compareWithBest,
   courseStars,
   courseTime,
@@ -505,6 +507,13 @@ describe('flight simulator course', () => {
     const rim = ringWay(markerBearing(ahead, [1000, 500, 100 - 68]));
     expect(courseTipText(5, 10, rim, desk, 68)).toBe('Ring 6 of 10 is to the right: hold → until the marker ⊕ is in it, then let go.');
     expect(courseTipText(5, 10, rim, desk, CLEAR_RADIUS)).not.toMatch(/Let go/);
+    // The marker turns green CLEAR_MARGIN inside it, and stays so up to it: a path drifting a few
+    // metres after the let-go does not flick the tip between "let go" and "steer" at the edge.
+    expect(clearThrough(CLEAR_RADIUS - CLEAR_MARGIN + 1, false)).toBe(false);
+    expect(clearThrough(CLEAR_RADIUS - CLEAR_MARGIN - 1, false)).toBe(true);
+    expect(clearThrough(CLEAR_RADIUS - 1, true)).toBe(true);
+    expect(clearThrough(CLEAR_RADIUS, true)).toBe(false);
+    expect(clearThrough(Infinity, true)).toBe(false);
     expect(courseTipText(9, 10, RING_WAYS[0]!, desk, 0)).toBe('Last ring (10): the marker ⊕ is in it. Let go of the keys and fly through.');
     expect(() => courseTipText(3, 10, RING_WAYS[0]!, desk, Infinity)).toThrow(/courseTipText: ring must be an integer in \[4, 10\), got 3/);
     expect(() => courseTipText(10, 10, RING_WAYS[0]!, desk, Infinity)).toThrow(/courseTipText: ring must be an integer/);
