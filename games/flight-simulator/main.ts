@@ -1578,11 +1578,17 @@ function wayOf(i: number): RingWay {
 /**
  * Which ways ring `i` lies as the words over the scene say it: for the coach's rings (from
  * LESSON_RINGS on) while the marker shows the next one, from the marker's point (./coach.ts
- * markerBearing), so the words agree with the screen; else from the line flown (`wayOf`). The coach's
- * tip and the banner over it both read this, so the two never say different ways.
+ * markerBearing; straight ahead while it is green), so the words agree with the screen; else from the
+ * line flown (`wayOf`). The coach's tip and the banner over it both read this, so the two never say
+ * different ways.
  */
 function spokenWay(i: number): RingWay {
-  return i >= LESSON_RINGS && i === nextRing(rings) && markedAt ? ringWay(markerBearing(rings[i]!, markedAt)) : wayOf(i);
+  if (!(i >= LESSON_RINGS && i === nextRing(rings) && markedAt)) return wayOf(i);
+  // With the marker green the aircraft goes through as it flies: "straight ahead", as the tip's
+  // "let go" (not "Next, ring 6: a little right" over it, the marker's point 30 m off the centre).
+  return pathAim.inside && pathAim.ring === i
+    ? { side: 0, up: 0, sideAmount: '', upAmount: '' }
+    : ringWay(markerBearing(rings[i]!, markedAt));
 }
 
 /** The key that climbs (up, or down with the pilot's pitch) or dives, for `up` +1 or -1. */
