@@ -429,15 +429,17 @@ export interface KeyRamp {
 /**
  * How the bank keys move their input (`rampKey`): a press asks at once for `start` (0.2 of full
  * stick, a bank of 14 degrees, of which the assist holds it until the touch is `ASSIST.tapTime` old,
- * so a 150 ms tap turns the aircraft about half a degree), then the input grows slowly at first and
- * faster the longer the key is held (`from` -0.12: its size less 0.12 grows as e^(2 t)): 0.25 at
- * 0.25 s, 0.44 at 0.7 s (a bank of 31 degrees), full after ln(0.88 / 0.08) / 2 = 1.2 s. A held key
- * then steers as gently as the phone's stick pushed part way, and a 0.7 s hold turns the heading
- * 1.6 degrees in all (a press starting at 0.45 and full after 0.23 s would have the wings at 55
- * degrees by then and turn 6 degrees, swinging a ring 5 degrees to one side past the other side); a turn held longer still reaches the full bank. Released, neutral in 1/12 s, so that the
- * wings start back to level at once (in 0.25 s they would first roll on).
+ * so a 150 ms tap turns the aircraft about half a degree), then the input grows about evenly (`from`
+ * 0.2: its size plus 0.2 grows as e^t): 0.31 at 0.25 s, 0.46 at 0.5 s, 0.61 at 0.7 s, full after
+ * ln 3 = 1.1 s. A held key turns the heading 4.1 degrees in its first second, 8.7 degrees/s at 1 s
+ * (grown slowly at first, as e^(2 t) from 0.08, it turned 2.8, 5.5 degrees/s, and the ring hardly
+ * moved for a second, then swung at 18 degrees/s by 2 s), and a 0.7 s hold about 2.5 degrees in all
+ * (a press starting at 0.45 and full after 0.23 s would have the wings at 55 degrees by then and turn
+ * 6 degrees, swinging a ring 5 degrees to one side past the other side); a turn held longer still
+ * reaches the full bank. Released, neutral in 1/12 s, so that the wings start back to level at once
+ * (in 0.25 s they would first roll on).
  */
-export const BANK_KEY_RAMP: KeyRamp = Object.freeze({ rise: 2, from: -0.12, fall: 12, start: 0.2 });
+export const BANK_KEY_RAMP: KeyRamp = Object.freeze({ rise: 1, from: 0.2, fall: 12, start: 0.2 });
 
 /**
  * One step of a keyboard axis on `ramp` (default KEY_RAMP; the bank keys use BANK_KEY_RAMP):

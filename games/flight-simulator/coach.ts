@@ -7,27 +7,30 @@
  */
 
 import type { Ring, RingBearing, RingWay, TipReader } from './course';
-import { ringWhere } from './course';
+import { clearThrough, ringWhere } from './course';
 
 /** Rings taught by the lessons (./course.ts lessonTipText, rings 1 to 4); the coach speaks from the next one on. */
 export const LESSON_RINGS = 4;
 
 /**
  * The coach's tip for ring `ring` (0-based, LESSON_RINGS or later) of `total`, lying `way` from the
- * line flown (./course.ts ringWay), for `reader`; `onCourse` when the flight-path marker shows the
- * aircraft passing inside it now. "Ring 6 is to the left and a little higher: hold ← and ↑ until ⊕ is
- * in it, then let go."; once on course, "let go and fly through"; the last ring is named so. On a
- * phone (`reader.compact`) the words are shorter, in the same two lines as a lesson tip.
+ * line flown (./course.ts ringWay), for `reader`; `markerOffset` is how far from its centre the
+ * flight-path marker shows the aircraft passing its plane if the pilot lets go now, m (./course.ts
+ * predictThroughRing; Infinity when it shows none). "Ring 6 is to the left and a little higher: hold ←
+ * and ↑ until ⊕ is in it, then let go."; "let go and fly through" only when letting go takes the
+ * whole aircraft through (./course.ts clearThrough: inside the ring less half the wingspan, not on
+ * its tube); the last ring is named so. On a phone (`reader.compact`) the words are shorter, in the
+ * same two lines as a lesson tip.
  * @throws RangeError on a `ring` that is not an integer in [LESSON_RINGS, total), or a `total` that is not a positive integer.
  */
-export function courseTipText(ring: number, total: number, way: RingWay, reader: TipReader, onCourse: boolean): string {
+export function courseTipText(ring: number, total: number, way: RingWay, reader: TipReader, markerOffset: number): string {
   if (!(Number.isInteger(total) && total > 0)) throw new RangeError(`courseTipText: total must be a positive integer, got ${total}`);
   if (!(Number.isInteger(ring) && ring >= LESSON_RINGS && ring < total))
     throw new RangeError(`courseTipText: ring must be an integer in [${LESSON_RINGS}, ${total}), got ${ring}`);
   const { touch, compact } = reader;
   const name = ring === total - 1 ? `Last ring (${ring + 1})` : `Ring ${ring + 1} of ${total}`;
   const input = touch ? 'the stick' : 'the keys';
-  if (onCourse)
+  if (clearThrough(markerOffset))
     return compact ? `${name}: ⊕ is in it. Let go and fly through.` : `${name}: the marker ⊕ is in it. Let go of ${input} and fly through.`;
   if (!way.side && !way.up) return `${name} is straight ahead: fly on through it.`;
   const sideWord = way.side > 0 ? 'right' : 'left';

@@ -9,8 +9,8 @@
 
 import { numberCheck, type StorageOptions, type StoredRecord, shapeCheck, storedRecord } from '@bitphysics/game-kit';
 import { Rng } from '@bitphysics/physics';
-import { terrainHeight } from '@bitphysics/projects';
-import { ASSIST, assertMotion } from './assist';
+import { AIRCRAFT, terrainHeight } from '@bitphysics/projects';
+import { ASSIST, assertMotion, steadyTurnBank } from './assist';
 
 /**
  * Radius of a ring, m, to the middle of its tube: the aircraft passes when its centre crosses inside
@@ -29,6 +29,31 @@ export const RING_TUBE = 6;
  * 68 m, a miss).
  */
 export const PASS_RADIUS = RING_RADIUS + RING_TUBE;
+
+/**
+ * How far from a ring's centre the aircraft's path may meet its plane for the whole aircraft to go
+ * through, m: RING_RADIUS less half the 30 m wingspan (2 x AIRCRAFT.wingHalfOffset), 50 m. The
+ * flight-path marker is green, and the coach says "let go", only inside it (`clearThrough`): at the
+ * tube (66 to 71 m) they said so with a wing through the tube, and a let-go a moment late or the
+ * path settling after it took the crossing outside PASS_RADIUS (a stranger missed three rings so).
+ */
+export const CLEAR_RADIUS = RING_RADIUS - 2 * AIRCRAFT.wingHalfOffset;
+
+/**
+ * How far inside CLEAR_RADIUS the marker must come before it turns green, m (`clearThrough`): once
+ * let go, the path drifts a few metres from the one predicted, and a marker that turned green at
+ * CLEAR_RADIUS went back and forth across it, the tip with it ("let go", "steer left", "let go").
+ */
+export const CLEAR_MARGIN = 5;
+
+/**
+ * Whether a path meeting a ring's plane `offset` m from its centre (Infinity: not at all) takes the
+ * whole aircraft through it: offset < CLEAR_RADIUS while it did (`was`, default true), and under
+ * CLEAR_RADIUS - CLEAR_MARGIN to become so. Never beyond CLEAR_RADIUS.
+ */
+export function clearThrough(offset: number, was = true): boolean {
+  return offset < CLEAR_RADIUS - (was ? 0 : CLEAR_MARGIN);
+}
 
 /** A crossing of a ring's plane farther than this from its centre, m, is not counted (the pilot is elsewhere). */
 export const MISS_RANGE = 600;
@@ -701,8 +726,47 @@ export function recedingSpeed(ring: Ring, position: readonly number[], velocity:
 }
 
 /**
+ * Radius of the tightest level turn the assist flies at `speed` m/s, m: full stick's bank
+ * (./assist.ts steadyTurnBank: ASSIST.maxBank's turn rate at the trim speed, at most
+ * ASSIST.steepestBank), speed^2 / (g tan(bank)): about 470 m at 115 m/s.
+ * @throws RangeError on a speed that is not finite and > 0.
+ */
+export function tightestTurnRadius(speed: number): number {
+  if (!(speed > 0 && Number.isFinite(speed))) throw new RangeError(`tightestTurnRadius: speed must be finite and > 0 m/s, got ${speed}`);
+  return (speed * speed) / (9.81 * Math.tan(steadyTurnBank(ASSIST.maxBank, speed)));
+}
+
+/**
+ * Whether an aircraft at `position` (m, world) flying along `velocity` (m/s, world) can no longer
+ * fly through `ring` without first flying away from it: it is past the ring's plane (on the far side
+ * of it), or the ring's centre lies, seen from above, inside the circle of the tightest turn towards
+ * it (`tightestTurnRadius`), which no turn reaches. A ring that is only off the line flown (above or
+ * below it, or to the side but outside that circle) is in reach, however it draws away now: a ring
+ * 750 m ahead under a steep climb was called missed while the pilot could still dive to it.
+ * @throws RangeError on a position or velocity that is not 3 finite numbers.
+ */
+export function outOfReach(ring: Ring, position: readonly number[], velocity: readonly number[]): boolean {
+  assertMotion('outOfReach', position, velocity);
+  const dx = ring.x - position[0]!,
+    dy = ring.y - position[1]!,
+    dz = ring.z - position[2]!;
+  if (dx * ring.nx + dy * ring.ny + dz * ring.nz <= 0) return true;
+  const vx = velocity[0]!,
+    vz = velocity[2]!,
+    level = Math.hypot(vx, vz);
+  if (!(level > 0)) return false;
+  // The centre in the heading's frame (ahead, to the right: +z is to the right of +x), and its distance
+  // from the centre of the tightest turn its way, that far to its side.
+  const ahead = (dx * vx + dz * vz) / level,
+    right = (dz * vx - dx * vz) / level,
+    radius = tightestTurnRadius(Math.hypot(vx, velocity[1]!, vz));
+  return Math.hypot(ahead, Math.abs(right) - radius) < radius;
+}
+
+/**
  * The rule for a ring left behind: when the next ring still ahead (`nextRing`) has fallen behind for
- * `behindFor` s (the aircraft drawing away from it faster than LEFT_BEHIND_SPEED without a break),
+ * `behindFor` s (the aircraft drawing away from it faster than LEFT_BEHIND_SPEED without a break,
+ * while it is out of reach: ./main.ts counts only those steps, `outOfReach`),
  * LEFT_BEHIND_TIME or more, it is missed (its status set) as if its plane were crossed outside it.
  * Returns what happened (empty when nothing did), as `flyRings` does: a ring passed to the side
  * beyond MISS_RANGE, or flown by without crossing its plane, is not counted by `flyRings`, and

@@ -14,7 +14,7 @@
  * next ring is laid just ahead: ./course.ts relayAfterMiss); a ring's first miss lays it ahead again
  * to be scored with no penalty (./second-try.ts); each ring missed for good adds MISS_PENALTY (10)
  * s to the course clock and every second miss costs a star (three to start with, shown on the goal
- * line: ./course.ts courseStars), said in the banner and by a red glow round the scene the moment it
+ * line: ./course.ts courseStars), said in the banner and by the goal line's flash the moment it
  * is missed. A ring the flight-path marker showed green is passed (./course.ts flyRings
  * `promised`); do not hit the ground. P (or the
  * toolbar's button) pauses: the scene dims and says so (game-kit's createDomPauseOverlay).
@@ -37,7 +37,7 @@
  * camera sits close behind and widens its view with speed, so the speed shows.
  * Keys: arrows or W/S/A/D: climb / dive and bank (with "pilot's pitch" in the panel, down pulls up),
  * ramped (./assist.ts rampKey: a tap is a small correction; climb and dive grow slowly at first to full
- * stick after 0.4 s held, the bank keys start at 0.2 of full stick (BANK_KEY_RAMP) and are full after 1.2 s);
+ * stick after 0.4 s held, the bank keys start at 0.2 of full stick (BANK_KEY_RAMP) and grow about evenly to full after 1.1 s);
  * Q / E: rudder; X / Z (or Shift, + / -): faster / slower (the throttle: the only input that moves it;
  * a press steps it a tenth at once, held it goes on: ./assist.ts throttleStep; no Ctrl, which with W
  * closes the browser's tab);
@@ -106,6 +106,7 @@ import { courseTipText, LESSON_RINGS, markerBearing } from './coach';
 import { createCockpit } from './cockpit';
 import {
   type BestResult,
+  clearThrough,
   compareWithBest,
   courseBests,
   courseStars,
@@ -121,6 +122,7 @@ import {
   MISS_PENALTY,
   nextRing,
   nextRingText,
+  outOfReach,
   PASS_RADIUS,
   predictThroughRing,
   RING_RADIUS,
@@ -641,10 +643,15 @@ function checkRings(time: number): void {
   }
   // Recovering from a miss: the ring now next turns to face the aircraft (a ring met at an angle
   // was seen edge on), and so does one whose plane the aircraft crossed far off (beyond MISS_RANGE:
-  // neither passed nor missed), so that coming back to it flies through it the way it comes.
+  // neither passed nor missed) once it comes back towards it, so that it flies through it the way it
+  // comes. Flying on away from it, it is left as it is: past its plane, it is missed (timeAway).
   if (next >= 0) {
     const r = rings[next]!;
-    const behind = (r.x - now[0]!) * r.nx + (r.y - now[1]!) * r.ny + (r.z - now[2]!) * r.nz <= 0;
+    const V = shell.world.components.Velocity,
+      e = handles.body;
+    const behind =
+      (r.x - now[0]!) * r.nx + (r.y - now[1]!) * r.ny + (r.z - now[2]!) * r.nz <= 0 &&
+      recedingSpeed(r, now, [V.x[e]!, V.y[e]!, V.z[e]!]) <= 0;
     if ((next !== before && rings[next - 1]?.status === 'missed') || behind) {
       faceRing(r, now);
       ringMeshes[next]?.quaternion.setFromUnitVectors(zAxis, ringNormal.set(r.nx, r.ny, r.nz));
@@ -676,7 +683,7 @@ let crashReadings: ReturnType<typeof instruments> | null = null;
 let awayFor = 0;
 /** The ring last laid ahead after a miss (./course.ts relayAfterMiss), -1 for none: left behind, it is laid ahead again with no miss. */
 let movedAhead = -1;
-/** Adds a step of `dt` s to `awayFor` while the aircraft draws away from the next ring faster than LEFT_BEHIND_SPEED, else clears it. */
+/** Adds a step of `dt` s to `awayFor` while the aircraft draws away from the next ring faster than LEFT_BEHIND_SPEED and it is out of reach (./course.ts outOfReach), else clears it. */
 function timeAway(world: PhysicsWorld, dt: number): void {
   const n = nextRing(rings);
   if (n < 0) {
@@ -687,7 +694,10 @@ function timeAway(world: PhysicsWorld, dt: number): void {
     e = handles.body;
   // Not while the marker shows the aircraft passing inside it: a ring met at a slant in a turn may
   // draw away from its centre for a while before its plane is crossed, inside.
-  const receding = recedingSpeed(rings[n]!, now, [V.x[e]!, V.y[e]!, V.z[e]!]) > LEFT_BEHIND_SPEED;
+  // Nor while it is still in reach (./course.ts outOfReach): a ring ahead under a climb, or off to the
+  // side outside the tightest turn, can still be flown to, and is not called missed until its plane is passed.
+  const velocity = [V.x[e]!, V.y[e]!, V.z[e]!];
+  const receding = recedingSpeed(rings[n]!, now, velocity) > LEFT_BEHIND_SPEED && outOfReach(rings[n]!, now, velocity);
   awayFor = receding && promisedRing(world.time) !== n ? awayFor + dt : 0;
 }
 
@@ -1054,14 +1064,6 @@ const pauseOverlay = createDomPauseOverlay(layout.stage, {
 pauseOverlay.element.style.justifyContent = 'flex-end';
 pauseOverlay.element.style.paddingBottom = '2%';
 /**
- * A red glow round the scene's edge for MISS_FLASH s of game time after a miss, fading (with the
- * banner and the goal line's flash, the miss is seen wherever the eye is).
- */
-const missFlash = overlay(
-  'left: 0; top: 0; right: 0; bottom: 0; transform: none; box-shadow: inset 0 0 60px 18px rgba(255, 70, 40, 0.85); opacity: 0; z-index: 5;',
-);
-missFlash.dataset.hud = 'miss-flash';
-/**
  * "Slow motion" in the scene's bottom left corner while the frame rate is under 10 a second
  * (./pacing.ts slowMotion): the flight then runs slower than the clock, so the pilot keeps control.
  */
@@ -1080,7 +1082,6 @@ function showSlowMotion(): void {
   const display = slowShown ? 'block' : 'none';
   if (slowNote.style.display !== display) slowNote.style.display = display;
 }
-const MISS_FLASH = 1.2;
 /** How long a banner stays, s of game time. */
 const BANNER_LIFE = 2;
 /** How long after a ring's tick the banner says where the next ring lies, s of game time. */
@@ -1230,7 +1231,7 @@ function showFinish(): void {
   });
 }
 
-/** Shows the newest event due in the banner for BANNER_LIFE s, and the red glow of a miss. */
+/** Shows the newest event due in the banner for BANNER_LIFE s. */
 function updateBanner(t: number): void {
   // The newest event already due (a note may be queued to follow the one on show).
   let last: (typeof events)[number] | undefined;
@@ -1254,9 +1255,6 @@ function updateBanner(t: number): void {
     banner.style.color = last.colour;
     banner.style.opacity = String(age < 1.4 ? 1 : (BANNER_LIFE - age) / 0.6);
   } else banner.style.display = 'none';
-  const flash = state.phase === 'flying' ? Math.max(0, 1 - (t - missedAt) / MISS_FLASH) : 0;
-  const opacity = flash > 0 ? flash.toFixed(2) : '0';
-  if (missFlash.style.opacity !== opacity) missFlash.style.opacity = opacity;
 }
 
 /**
@@ -1580,11 +1578,17 @@ function wayOf(i: number): RingWay {
 /**
  * Which ways ring `i` lies as the words over the scene say it: for the coach's rings (from
  * LESSON_RINGS on) while the marker shows the next one, from the marker's point (./coach.ts
- * markerBearing), so the words agree with the screen; else from the line flown (`wayOf`). The coach's
- * tip and the banner over it both read this, so the two never say different ways.
+ * markerBearing; straight ahead while it is green), so the words agree with the screen; else from the
+ * line flown (`wayOf`). The coach's tip and the banner over it both read this, so the two never say
+ * different ways.
  */
 function spokenWay(i: number): RingWay {
-  return i >= LESSON_RINGS && i === nextRing(rings) && markedAt ? ringWay(markerBearing(rings[i]!, markedAt)) : wayOf(i);
+  if (!(i >= LESSON_RINGS && i === nextRing(rings) && markedAt)) return wayOf(i);
+  // With the marker green the aircraft goes through as it flies: "straight ahead", as the tip's
+  // "let go" (not "Next, ring 6: a little right" over it, the marker's point 30 m off the centre).
+  return pathAim.inside && pathAim.ring === i
+    ? { side: 0, up: 0, sideAmount: '', upAmount: '' }
+    : ringWay(markerBearing(rings[i]!, markedAt));
 }
 
 /** The key that climbs (up, or down with the pilot's pitch) or dives, for `up` +1 or -1. */
@@ -1611,8 +1615,13 @@ function lessonTip(): string {
   if ((i === 0 && !holding) || shell.world.time >= tipGoneAt) return '';
   const reader = { touch: touchFirst, compact, pilotPitch: params.pilotPitch };
   // After the lessons the coach says where each ring lies and what to do, to the last (./coach.ts).
-  if (i >= LESSON_RINGS) return courseTipText(i, rings.length, spokenWay(i), reader, pathAim.visible && pathAim.inside);
-  return lessonTipText(i, tipWay, reader);
+  if (i >= LESSON_RINGS)
+    return courseTipText(i, rings.length, spokenWay(i), reader, pathAim.visible && pathAim.inside ? pathAim.offset : Infinity);
+  // A lesson's "straight ahead: let go" only when letting go flies the aircraft through (the line
+  // flown now can point at the ring while the turn still in it carries the path off: then the
+  // marker's way, which names where to steer).
+  const through = !tipWay.side && !tipWay.up && markedAt && !pathAim.inside;
+  return lessonTipText(i, through ? ringWay(markerBearing(rings[i]!, markedAt!)) : tipWay, reader);
 }
 
 /** What to touch on a phone, and where: the round stick under the scene, at its left. */
@@ -1844,7 +1853,7 @@ function placeMessages(): void {
  * so holding a turn until the marker is in the ring and letting go flies through it; without the
  * assist, the turn held as it is. (A straight line from the velocity would ignore the turn: a pilot
  * banking towards a ring would see the marker at its edge and miss it by far.) Orange when it is outside
- * the ring (not the ring's yellow: on the tube it must not read as in), green when inside (PASS_RADIUS), each over a thick black outline so that it shows on sky, cloud,
+ * the ring (not the ring's yellow: on the tube it must not read as in), green when the whole aircraft goes through (./course.ts clearThrough), each over a thick black outline so that it shows on sky, cloud,
  * ground and the yellow ring alike (a thin white one is lost against the sky and the clouds);
  * hidden when the ring's plane is not met.
  */
@@ -1856,10 +1865,10 @@ marker.dataset.hud = 'path-marker';
 }
 /**
  * What the marker shows (tests): visible, inside the next ring, its offset from the ring's centre
- * (m), its place (px), and the game time of the drawn frame that placed it last (s; frames the pacer
- * does not draw leave it where it was).
+ * (m), its place (px), the game time of the drawn frame that placed it last (s; frames the pacer
+ * does not draw leave it where it was) and the ring it was placed for.
  */
-const pathAim = { visible: false, inside: false, offset: Infinity, x: 0, y: 0, drawnAt: -1 };
+const pathAim = { visible: false, inside: false, offset: Infinity, x: 0, y: 0, drawnAt: -1, ring: -1 };
 const markAt = new Vector3();
 /** Where the marker shows the aircraft passing the next ring's plane (m, world), or null when it shows none. */
 let markedAt: readonly number[] | null = null;
@@ -1881,11 +1890,16 @@ function markPath(): void {
   markedAt = pathAim.visible && through ? through.point : null;
   marker.style.display = pathAim.visible ? 'block' : 'none';
   promise.ring = -1;
+  // Green stays green while it holds (./course.ts CLEAR_MARGIN), for the same ring only.
+  const was = pathAim.inside && pathAim.ring === i;
+  pathAim.ring = i;
+  pathAim.inside = false;
   if (!through || !pathAim.visible) return;
   pathAim.offset = through.offset;
-  // Inside the drawn tube's outer edge: the pass test's radius (./course.ts PASS_RADIUS), and a
-  // promise kept (`promise`).
-  pathAim.inside = through.offset < PASS_RADIUS;
+  // Green, and a promise kept (`promise`), only where the whole aircraft goes through (./course.ts
+  // clearThrough: the ring less half the wingspan), as the coach's "let go" (a marker green on the
+  // tube, with a wing through it, drifted out as the path settled and the ring was missed).
+  pathAim.inside = clearThrough(through.offset, was);
   if (pathAim.inside) {
     promise.ring = i;
     promise.at = world.time;
@@ -2214,8 +2228,8 @@ shell.expose({
     const reader = { touch: touchFirst, compact, pilotPitch: params.pilotPitch };
     // The coach's (./coach.ts) for ring 5 of 10 and the last (the longest names), each way and on course.
     const coach = [LESSON_RINGS, 9].flatMap((i) => [
-      ...RING_WAYS.map((w) => courseTipText(i, 10, w, reader, false)),
-      courseTipText(i, 10, RING_WAYS[0]!, reader, true),
+      ...RING_WAYS.map((w) => courseTipText(i, 10, w, reader, Infinity)),
+      courseTipText(i, 10, RING_WAYS[0]!, reader, 0),
     ]);
     return [...[0, 1, 2, 3].flatMap((i) => RING_WAYS.map((w) => lessonTipText(i, w, reader))), ...coach];
   },

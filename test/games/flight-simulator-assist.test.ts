@@ -176,7 +176,7 @@ describe('flight assist', () => {
 
   it('steering: a held key turns half round within 15 s; a 150 ms tap turns under 2 degrees; let go at a heading, the turn runs on under 4 degrees', () => {
     // Strangers took 35 s for a half turn with the 45 degree full bank (measured 38 s from 130 m/s):
-    // now 14.1 s (the bank keys grow gently over 1.2 s to full stick, so a short hold is a small turn). A tap is a small correction (measured 0.8 degrees); it held its bank for 1.1 s and
+    // now 14.1 s (the bank keys grow over 1.1 s to full stick, so a short hold is a small turn). A tap is a small correction (measured 0.8 degrees); it held its bank for 1.1 s and
     // turned 3 degrees, and strangers found the aircraft stayed banked after the key was let go.
     const half = bankKey((_, turned) => turned < 180, 20).findIndex((x) => x >= 180);
     expect(half).toBeGreaterThan(0);
@@ -218,6 +218,17 @@ describe('flight assist', () => {
     expect(short).toBeGreaterThan(0.8);
     expect(short).toBeLessThan(3);
     expect(turnedBy(1.2)).toBeGreaterThan(2 * short);
+  });
+
+  it('a held bank key answers in its first second: the heading turns 3.5 degrees or more in 1 s, and not a slow start then a whip', () => {
+    // A stranger found the keys slow: held, the ring hardly moved for a second (2.8 degrees turned in
+    // 1 s, 5.5 degrees/s at 1 s), then swung (18 degrees/s at 2 s, 0.30 of it at 1 s). The ramp now
+    // grows more evenly from the same press (BANK_KEY_RAMP): measured 4.1 degrees in 1 s, 8.7
+    // degrees/s at 1 s, 0.51 of the rate at 2 s, while 0.7 s still turns under 3 (the test above).
+    const held = bankKey(() => true, 2.2);
+    const rate = (t: number) => (held[Math.round(t * 60)]! - held[Math.round(t * 60) - 6]!) * 10;
+    expect(held[59]!).toBeGreaterThan(3.5);
+    expect(rate(1) / rate(2)).toBeGreaterThan(0.45);
   });
 
   it('let go, the wings roll level at once: 1 s after a release of the bank key (0.15 to 2 s held) the bank is under 3 degrees; the heading turned grows with the hold', () => {

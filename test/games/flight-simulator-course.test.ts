@@ -15,6 +15,9 @@ import { describe, expect, it } from 'vitest';
 import { AILERON_SCALE, ASSIST, assist, CONTROL_AUTHORITY, createAssistState, flightState } from '../../games/flight-simulator/assist';
 import { courseTipText, LESSON_RINGS, markerBearing } from '../../games/flight-simulator/coach';
 import {
+  CLEAR_MARGIN,
+  CLEAR_RADIUS,
+  clearThrough,
   compareWithBest,
   courseStars,
   courseTime,
@@ -34,6 +37,7 @@ import {
   MISS_RANGE,
   nextRing,
   nextRingText,
+  outOfReach,
   PASS_RADIUS,
   pathThroughRing,
   RECOVERY_DISTANCE,
@@ -53,6 +57,7 @@ import {
   ringDifficulty,
   ringWay,
   TIP_OFFSET,
+  tightestTurnRadius,
 } from '../../games/flight-simulator/course';
 import { courseName, finishCard, LAST_SEED, nextSeed } from '../../games/flight-simulator/finish';
 import { secondTry, tryBanner } from '../../games/flight-simulator/second-try';
@@ -461,7 +466,7 @@ describe('flight simulator course', () => {
     for (const reader of [phone, desk, { ...desk, pilotPitch: true }])
       for (const i of [LESSON_RINGS, 6, 9])
         for (const w of RING_WAYS) {
-          const text = courseTipText(i, 10, w, reader, false);
+          const text = courseTipText(i, 10, w, reader, Infinity);
           // Named by number, the last as the last.
           expect(text.startsWith(i === 9 ? 'Last ring (10)' : `Ring ${i + 1} of 10`), text).toBe(true);
           const where = text.split(': ')[0]!;
@@ -493,13 +498,26 @@ describe('flight simulator course', () => {
     expect(ringWay(markerBearing(ahead, [1000, 540, 0]))).toMatchObject({ side: 1, up: -1 });
     expect(ringWay(markerBearing({ ...ahead, nx: -1 }, [1000, 540, 0]))).toMatchObject({ side: -1, up: -1 });
     expect(() => markerBearing({ ...ahead, nx: 0, ny: 1 }, [0, 0, 0])).toThrow(/markerBearing: ring's normal/);
-    expect(courseTipText(5, 10, RING_WAYS[0]!, phone, true)).toBe('Ring 6 of 10: ⊕ is in it. Let go and fly through.');
-    expect(courseTipText(9, 10, RING_WAYS[0]!, desk, true)).toBe(
-      'Last ring (10): the marker ⊕ is in it. Let go of the keys and fly through.',
-    );
-    expect(() => courseTipText(3, 10, RING_WAYS[0]!, desk, false)).toThrow(/courseTipText: ring must be an integer in \[4, 10\), got 3/);
-    expect(() => courseTipText(10, 10, RING_WAYS[0]!, desk, false)).toThrow(/courseTipText: ring must be an integer/);
-    expect(() => courseTipText(4, 0, RING_WAYS[0]!, desk, false)).toThrow(/courseTipText: total must be a positive integer, got 0/);
+    expect(courseTipText(5, 10, RING_WAYS[0]!, phone, 0)).toBe('Ring 6 of 10: ⊕ is in it. Let go and fly through.');
+    // "Let go" only where letting go takes the whole aircraft through: the marker within the ring's
+    // radius less half the 30 m wingspan (50 m). On the tube (66 to 71 m, where it said "let go" and a
+    // stranger who let go missed three rings) it names the way to steer.
+    expect(CLEAR_RADIUS).toBe(RING_RADIUS - 15);
+    expect(courseTipText(5, 10, RING_WAYS[0]!, phone, CLEAR_RADIUS - 1)).toMatch(/Let go/);
+    const rim = ringWay(markerBearing(ahead, [1000, 500, 100 - 68]));
+    expect(courseTipText(5, 10, rim, desk, 68)).toBe('Ring 6 of 10 is to the right: hold → until the marker ⊕ is in it, then let go.');
+    expect(courseTipText(5, 10, rim, desk, CLEAR_RADIUS)).not.toMatch(/Let go/);
+    // The marker turns green CLEAR_MARGIN inside it, and stays so up to it: a path drifting a few
+    // metres after the let-go does not flick the tip between "let go" and "steer" at the edge.
+    expect(clearThrough(CLEAR_RADIUS - CLEAR_MARGIN + 1, false)).toBe(false);
+    expect(clearThrough(CLEAR_RADIUS - CLEAR_MARGIN - 1, false)).toBe(true);
+    expect(clearThrough(CLEAR_RADIUS - 1, true)).toBe(true);
+    expect(clearThrough(CLEAR_RADIUS, true)).toBe(false);
+    expect(clearThrough(Infinity, true)).toBe(false);
+    expect(courseTipText(9, 10, RING_WAYS[0]!, desk, 0)).toBe('Last ring (10): the marker ⊕ is in it. Let go of the keys and fly through.');
+    expect(() => courseTipText(3, 10, RING_WAYS[0]!, desk, Infinity)).toThrow(/courseTipText: ring must be an integer in \[4, 10\), got 3/);
+    expect(() => courseTipText(10, 10, RING_WAYS[0]!, desk, Infinity)).toThrow(/courseTipText: ring must be an integer/);
+    expect(() => courseTipText(4, 0, RING_WAYS[0]!, desk, Infinity)).toThrow(/courseTipText: total must be a positive integer, got 0/);
   });
 
   it("the banner of a ring laid ahead after a miss and that ring's lesson tip, from the same way, say the same of where it lies", () => {
@@ -576,6 +594,33 @@ describe('flight simulator course', () => {
     expect(leaveBehind(a, 100)).toEqual([]);
     expect(() => leaveBehind(rings(), Number.NaN)).toThrow(/leaveBehind: behindFor must be finite and >= 0 s, got NaN/);
     expect(() => leaveBehind(rings(), -1)).toThrow(/leaveBehind: behindFor must be finite and >= 0 s, got -1/);
+  });
+
+  it('a ring falling behind is missed only out of reach: past its plane, or inside the tightest turn; not one ahead under a climb, nor one off to the side that a turn still reaches', () => {
+    // The tightest turn the assist flies: full stick's bank (70 degrees at the trim speed, more when
+    // faster: ./assist.ts steadyTurnBank), V^2 / (g tan(bank)); about 470 m at 115 m/s.
+    expect(tightestTurnRadius(115)).toBeGreaterThan(400);
+    expect(tightestTurnRadius(115)).toBeLessThan(550);
+    expect(() => tightestTurnRadius(0)).toThrow(/tightestTurnRadius: speed must be finite and > 0 m\/s, got 0/);
+    const ring: Ring = { x: 1000, y: 500, z: 0, nx: 1, ny: 0, nz: 0, status: 'ahead' };
+    // 751 m off, 500 m ahead and 560 m below, the aircraft climbing at 45 degrees: drawing away from its
+    // centre (the old rule called it missed after 1.5 s, "Missed ring 4" with the ring 751 m ahead),
+    // but a dive still reaches it: in reach.
+    const climbing = [115 * Math.SQRT1_2, 115 * Math.SQRT1_2, 0];
+    expect(Math.hypot(500, 560)).toBeCloseTo(751, 0);
+    expect(recedingSpeed(ring, [500, 1060, 0], climbing)).toBeGreaterThan(LEFT_BEHIND_SPEED);
+    expect(outOfReach(ring, [500, 1060, 0], climbing)).toBe(false);
+    // Abeam 1.5 km off to the side, short of its plane, flying on along +x: outside the tightest turn, in reach.
+    expect(outOfReach(ring, [900, 500, 1500], [115, 0, 0])).toBe(false);
+    // Abeam 300 m off to the side, flying on along +x: inside the tightest turn (its centre 470 m to
+    // that side), out of reach; flying along -x (the same side now on the other hand) too.
+    expect(outOfReach(ring, [990, 500, 300], [115, 0, 0])).toBe(true);
+    expect(outOfReach(ring, [990, 500, 300], [-115, 0, 0])).toBe(true);
+    // Past its plane: out of reach, however near.
+    expect(outOfReach(ring, [1010, 500, 900], [115, 0, 0])).toBe(true);
+    // Straight ahead: in reach.
+    expect(outOfReach(ring, [0, 500, 0], [115, 0, 0])).toBe(false);
+    expect(() => outOfReach(ring, [0, Number.NaN, 0], [1, 0, 0])).toThrow(/outOfReach: position must be 3 finite numbers/);
   });
 
   it('faceRing: a ring met after a miss faces the aircraft: its way through is the line from the aircraft, its centre stays, and it is passed flying on', () => {
