@@ -82,7 +82,7 @@ import { pauseBandTop } from './pause-band';
 import { createHeaveTiming, createPressTiming, releasedOrder } from './release';
 import { drawFish } from './sea-life';
 import { type BedAhead, bedAhead, DIVE_STOPPED_WORD, helmWord, seabedInput, touchSeabed } from './seabed';
-import { stickDirection, stickOrder, stickShare } from './stick';
+import { stickDirection, stickHeaveDirection, stickOrder, stickShare } from './stick';
 import { type Glow, layTrail, touchesGlow } from './trail';
 
 const params = {
@@ -444,9 +444,12 @@ let lastDrive = 1;
 function heaveAsked(): -1 | 0 | 1 {
   return keyAxis(['s', 'arrowdown'], ['w', 'arrowup']);
 }
-/** The stick pushed down (-1) or up (1) to move its depth order (./stick.ts stickOrder), 0 neither; 0 while a Dive or Rise key is held. */
+/**
+ * The stick pushed down (-1) or up (1) to move its depth order (./stick.ts stickOrder), 0 neither; 0
+ * while a Dive or Rise key is held, and 0 for a push near the horizontal (./stick.ts stickHeaveDirection).
+ */
 function stickHeave(): -1 | 0 | 1 {
-  return heaveAsked() !== 0 ? 0 : stickDirection(stickInput.y, stickInput.x);
+  return heaveAsked() !== 0 ? 0 : stickHeaveDirection(stickInput.y, stickInput.x);
 }
 /** The depth the stick orders, as the hull's height, m (./stick.ts stickOrder; NaN while none): the helm takes the boat there and levels on it. */
 let stickDepth = Number.NaN;
@@ -530,7 +533,8 @@ function heldInput(now: number, drive: -1 | 0 | 1): HelmInput {
     // The stick pushed up or down only keeps the screw as it is (pushing it straight up to rise does
     // not stop the screw); a thumb lifted or resting at the centre lets the screw wind down as a key
     // let go does (a thumb eased back from a push ahead is a let-go); pushed sideways, it drives the screw.
-    keepThrottle: stickInput.held && stickDirection(stickInput.x, stickInput.y) === 0 && stickDirection(stickInput.y, stickInput.x) !== 0,
+    keepThrottle:
+      stickInput.held && stickDirection(stickInput.x, stickInput.y) === 0 && stickHeaveDirection(stickInput.y, stickInput.x) !== 0,
   };
 }
 
