@@ -1249,12 +1249,14 @@ app.stage.addChild(mineTag);
  * a pilot pausing to think still sees the mines and beacons ahead.
  */
 const pause = createPauseOverlay({ shadeAlpha: 0.15, fontSize: 22 });
-/** The pause words' band across the scene (drawPause), under the words. */
+/** The pause words' band (drawPause): a pill under the words, centred across the scene. */
 const pauseBand = new Graphics();
 pause.container.addChildAt(pauseBand, 1);
 app.stage.addChild(pause.container);
 /** Height of the pause band, px: the two lines of words and a margin. */
 const PAUSE_BAND = 64;
+/** Room on each side of the pause words in their band, px: the band is as wide as the words and this. */
+const PAUSE_PAD = 18;
 const touch = isTouchDevice();
 /** Whether the pause overlay showed in the last frame drawn by drawPause. */
 let pauseShown = false;
@@ -1262,7 +1264,7 @@ let pauseShown = false;
 const pauseBandBox = [0, 0, 0, 0];
 /**
  * Shows or hides the pause overlay over a `W` x `H` px scene, on top of everything drawn on the stage:
- * its words on a band at the bottom edge, or at the top edge while the boat (at `boatY` px from the
+ * its words on a band as wide as they are (PAUSE_PAD each side), centred at the bottom edge, or at the top edge while the boat (at `boatY` px from the
  * top) would be under the bottom band, so the band stays put as the boat dives (it moved between
  * the edges as the boat crossed the middle of the scene). The band keeps clear of the cards over the
  * scene's edges (the first-time hint, the touch hint, the current's note) and, where there is room
@@ -1296,9 +1298,13 @@ function drawPause(W: number, H: number, boatY: number): void {
     }
     // The bottom edge, or the top one while the boat is near the bottom, clear of the target's label (./pause-band.ts).
     const top = pauseBandTop(upper, lower, PAUSE_BAND, boatY, pointer.visible ? [aim.label[1]!, aim.label[3]!] : null);
-    pauseBand.clear().rect(0, top, W, PAUSE_BAND).fill({ color: 0x050a14, alpha: 0.6 });
+    // A pill round the words, not a band across the scene: the band hid the whole bottom strip (the
+    // seabed and the helm dial) from a pilot pausing to look ahead.
+    const bw = Math.min(W, Math.ceil(pause.words.width) + 2 * PAUSE_PAD),
+      bx = (W - bw) / 2;
+    pauseBand.clear().roundRect(bx, top, bw, PAUSE_BAND, 12).fill({ color: 0x050a14, alpha: 0.6 });
     pause.words.position.set(W / 2, top + PAUSE_BAND / 2);
-    pauseBandBox.splice(0, 4, 0, top, W, PAUSE_BAND);
+    pauseBandBox.splice(0, 4, bx, top, bw, PAUSE_BAND);
   }
 }
 /** The warning's words for each side to pass the mine on (placeMineTag adds how far ahead the mine is: "MINE 40 m"). */
@@ -2005,6 +2011,40 @@ function boxOf(t: Text): [number, number, number, number] {
   const b = t.getBounds();
   return [b.x, b.y, b.width, b.height];
 }
+/** The names of the words drawn on a backing over the seabed in the last frame (backOverSeabed). */
+const backedLabels: string[] = [];
+/**
+ * Puts a dark pill (the beacon pointer's, 0x06213a at 0.85) under each of the scene's small words
+ * that lies over the seabed: the other beacons' tags, the gauge's and the ladder's figures, the
+ * target's depth, the depth order and the glows' points. Over the bed's light rim and rocks they
+ * read at under 3:1 (the beacons' yellow on the rim's tan); on the pill at over 10:1. A `W` px wide
+ * view centred on x = `cx` (m) at `k` px a metre, `sy` world height to screen px. Call it after
+ * `declutter`, which hides some of them.
+ */
+function backOverSeabed(W: number, cx: number, k: number, sy: (y: number) => number): void {
+  backedLabels.length = 0;
+  const overBed = ([x0, y0, w, h]: readonly number[]): boolean => {
+    for (let px = Math.max(0, x0!); ; px = Math.min(x0! + w!, px + 4)) {
+      if (sy(seabedHeight(handles.seabed, cx + (px - W / 2) / k)) < y0! + h! + 2) return true;
+      if (px >= x0! + w!) return false;
+    }
+  };
+  const small: [string, Text | undefined][] = [
+    ['target depth', gaugeTarget],
+    ['order', orderTag],
+    ...ladderMarks.map((m): [string, Text] => ['ladder', m]),
+    ...tags.slice(0, otherTags).map((t): [string, Text] => ['beacon tag', t]),
+    ...popLabels.map((t): [string, Text] => ['glow points', t]),
+    ...gaugeMarks.map((t): [string, Text] => ['gauge figure', t]),
+  ];
+  for (const [name, t] of small) {
+    if (!t?.visible || t.alpha <= 0 || t.text === '') continue;
+    const [x, y, w, h] = boxOf(t);
+    if (w <= 0 || !overBed([x, y, w, h])) continue;
+    g.roundRect(x - 4, y - 1, w + 8, h + 2, Math.min(8, h / 2 + 1)).fill({ color: 0x06213a, alpha: 0.85 * t.alpha });
+    backedLabels.push(name);
+  }
+}
 /**
  * The words over the scene as last drawn, after `declutter` (tests): each shown one's name and box
  * (x, y, width, height, px).
@@ -2196,6 +2236,8 @@ function textBox(text: Text): [number, number, number, number] {
   return [text.x - text.width, text.y - text.height / 2, text.width, text.height];
 }
 
+/** The beacon pointer's pill keeps at least this far under the view's top edge, px. */
+const LABEL_TOP = 4;
 /** How far the beacon pointer's pill is kept above the seabed under it, px. */
 const LABEL_BED_CLEAR = 6;
 
@@ -2973,6 +3015,9 @@ function draw(): void {
       // more out from the beacon), so the label covers neither.
       pointer.x = bx;
       pointer.y = by - Math.max(14, BEACON_CATCH * k) - 12 - pointer.height / 2 - 4;
+      // A beacon near the view's top: under the ring instead (above, the label ran off the top,
+      // under the status bar).
+      if (pointer.y - pointer.height / 2 - 2 < LABEL_TOP) pointer.y = by + Math.max(14, BEACON_CATCH * k) + 12 + pointer.height / 2 + 4;
     }
     // Kept inside the view (a long label beside a badge at a side edge).
     // (its pill is 7 px wider each side than the text and the switch's ring 3 px more; 5 px more
@@ -3096,6 +3141,8 @@ function draw(): void {
       const above = ty - pointer.height / 2 - 8;
       pointer.y = above >= pointer.height / 2 + 4 ? above : ty + th + pointer.height / 2 + 8;
     }
+    // Whatever moved it, its pill stays inside the view (LABEL_TOP px under the top).
+    pointer.y = Math.min(H - pointer.height / 2 - 4, Math.max(LABEL_TOP + pointer.height / 2 + 2, pointer.y));
     aim.label = [pointer.x - pointer.width / 2, pointer.y - pointer.height / 2, pointer.width, pointer.height];
     aim.hull = [hx0 - hr, hy0 - hr, 2 * hr, 2 * hr];
     // The pickup banner ("Beacon 3 of 6") off the label's pill (on a phone it would be drawn over it):
@@ -3214,6 +3261,7 @@ function draw(): void {
   // The hull's box on the screen (level, its sail included): the tags that only add are kept off it.
   const hr = Math.max(SUBMARINE.length / 2, SUBMARINE.height / 2 + 2) * k;
   declutter(H, [sx(hxw) - (SUBMARINE.length / 2) * k, sy(hyw) - hr / 2, SUBMARINE.length * k, hr]);
+  backOverSeabed(W, cx, k, sy);
   drawHitPill();
   drawPause(W, H, sy(hyw));
   // The hull gauge at a hit: red and enlarged, fading over GAUGE_FLASH s of game time.
@@ -3327,6 +3375,8 @@ shell.expose({
   depthLadder: () => ({ alpha: ladder.alpha, marks: ladderMarks.filter((m) => m.visible).map((m) => m.text) }),
   /** The words over the scene as last drawn, kept off each other: each shown one's name and box (x, y, width, height, px). */
   labels: () => shownLabels.map((l) => ({ name: l.name, box: [...l.box] })),
+  /** The names of the small words drawn on a backing pill over the seabed in the last frame (backOverSeabed). */
+  labelBacks: () => [...backedLabels],
   /**
    * The depth gauge's tags as last drawn: the boat's depth and the target's, each x, y, width,
    * height, px (zeros while hidden), and their words ("you 31 m", "beacon A 27 m"; '' while hidden).

@@ -1321,13 +1321,18 @@ describe.each(SIZES)('submarine ($device)', ({ device, viewport, touch }) => {
           pointer: w.beaconPointer(),
           hullY: cam.height / 2 - (w.world.components.Position.y[w.hull()]! - cam.y) * cam.zoom,
           k: cam.zoom,
+          width: cam.width,
         };
       });
-      const [, by = 0, , bh = 0] = r.pause.band,
+      const [, by = 0, bw = 0, bh = 0] = r.pause.band,
         [, ly = 0, , lh = 0] = r.pointer.label;
       const at = `${device} ${dx}, ${dy} m: band ${r.pause.band.map(Math.round)}, label ${r.pointer.label.map(Math.round)}, hull y ${r.hullY.toFixed(0)}`;
       expect(r.pause.visible, at).toBe(true);
       expect(bh, at).toBeGreaterThan(0);
+      // As wide as its words, not across the scene (issue 34: it hid the whole bottom strip): at most
+      // half the scene's width (about 190 px of 1060 and 170 px of 390 drawn).
+      expect(bw, at).toBeGreaterThan(0);
+      expect(bw, at).toBeLessThanOrEqual(0.5 * r.width);
       if (r.pointer.visible) expect(by + bh <= ly || ly + lh <= by, at).toBe(true);
       // The hull's box (4 m high with the sail) off the band.
       expect(by + bh <= r.hullY - 2 * r.k || r.hullY + 2 * r.k <= by, at).toBe(true);
