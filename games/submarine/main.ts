@@ -62,6 +62,7 @@ import {
 import { drawBoat, HEADLIGHT, inHeadlight } from './boat-drawing';
 import { CURRENT_NOTE_LIFE, CURRENT_NOTE_SPEED, currentAt, currentMark, currentNote, drawCurrent, driftInCurrent } from './current';
 import { type EdgeMark, edgeMarks } from './edge-marks';
+import { FRAME_MARGIN, LEAD_SHARE, leadLimits, PORTRAIT_MIN_WIDTH, PORTRAIT_MIN_ZOOM_UNDER_WAY } from './framing';
 import { coastDistance, createHelmState, HELM, type HelmInput, holdFloor, keyHeaveShare, NO_INPUT, noseTrim, steer } from './helm';
 import { createLevelStop, LEVEL_BAND, levelStop, levelWith } from './level-stop';
 import { bestTimes, LEVELS, levelCourse, MAX_BEACONS, MAX_BEST_TIME } from './levels';
@@ -259,14 +260,6 @@ const aim = {
 const pickups: (Shown & { text: string; passed?: boolean })[] = [];
 /** How long a pickup's rings and banner last, s of game time. */
 const PICKUP_LIFE = 2;
-/** The framing camera: the hull and the next beacon are kept this far inside the view's edges, px. */
-const FRAME_MARGIN = 60;
-/**
- * Room the framing camera keeps clear between the hull's ends and the view's left and right edges,
- * px: the depth ladder and its figures ("30 m", about 36 px) are drawn left of the stern, so on a
- * phone leading ahead the boat never sits at the edge with its tail cut off and the figures on it.
- */
-const HULL_SIDE_ROOM = 60;
 /**
  * Room the framing camera keeps clear between the tip of the hull's headlight (its bow plus
  * HEADLIGHT.reach, ./boat-drawing.ts) and the view's right edge, px: the depth gauge and its tags
@@ -295,17 +288,8 @@ const LEAD_TIME = 3;
  * seconds after it had stopped, which reads as a late answer and an overshoot).
  */
 const LEAD_TIME_Y = 0.4;
-/** The look-ahead is at most this share of the distance from the view's centre to the framing margin. */
-const LEAD_SHARE = 0.6;
 /** The look-ahead eases toward its target with this time constant, s of game time. */
 const LEAD_EASE = 0.8;
-/**
- * On a portrait view (narrower than tall) under way the framing camera shows at least this much sea
- * across, m: a 390 px phone 80 m (4.9 px/m, the 12 m hull 59 px long), so with the look-ahead over
- * 40 m of the way ahead of the bow is in view. A wider view than tall is not limited by it (the
- * desktop's framing is unchanged).
- */
-const PORTRAIT_MIN_WIDTH = 80;
 /**
  * The same at rest, m: a 390 px phone 60 m (6.5 px/m, the hull 78 px long) once the target is near
  * enough to be framed that close; between rest and `PORTRAIT_SPEED` it eases from this to
@@ -313,31 +297,16 @@ const PORTRAIT_MIN_WIDTH = 80;
  */
 const PORTRAIT_REST_WIDTH = 60;
 /**
- * The least zoom of a portrait view under way, px/m: 4.5 (the hull 54 px long). At rest it is
- * `FRAME_MIN_ZOOM` (3.5), so a target up to about 65 m away is framed while the pilot sets off (the
- * first one at the start); between rest and `PORTRAIT_SPEED` it eases from one to the other. Under way
- * a target further than about 50 m is shown by the edge arrow until it comes into view.
- */
-const PORTRAIT_MIN_ZOOM_UNDER_WAY = 4.5;
-/**
  * The speed ahead, m/s, from which a portrait view counts as fully under way for its framing (above).
  * Backing does not count: a pilot backs onto a target behind, which the view at rest's zoom keeps framed.
  */
 const PORTRAIT_SPEED = 4;
 /**
- * The look-ahead's share of the way to the framing margin (`LEAD_SHARE`) on a portrait view, and
- * there the most the view's centre leads the hull even toward a target far ahead: 0.55, so under
- * way the hull's centre sits about 30% of the view in from its trailing edge (it sat at 21%, its
- * stern near the edge, which read as the boat pressed into the corner), and the bow still has over
- * 60% of the view's width of sea ahead.
- */
-const PORTRAIT_LEAD_SHARE = 0.55;
-/**
  * The look-ahead along x on a portrait view, s (`LEAD_TIME` elsewhere): longer, so that on a narrow
  * phone the view is already at its full lead (the boat near the trailing edge, about 60 m of sea
- * ahead of the bow) from about 8 m/s instead of 12 m/s, and a mine ahead is in view sooner.
+ * ahead of the bow) from under 6 m/s, and a mine ahead is in view sooner.
  */
-const PORTRAIT_LEAD_TIME = 3.4;
+const PORTRAIT_LEAD_TIME = 4;
 /**
  * The camera as last drawn: centre (x, y, m), zoom (px/m), the eased look-ahead (leadX, leadY, m,
  * before its limit), the game time it was eased to (s), the shake now (px) and the view's size (px).
@@ -2554,16 +2523,15 @@ function draw(): void {
   const widest = portrait ? W / (PORTRAIT_REST_WIDTH + (PORTRAIT_MIN_WIDTH - PORTRAIT_REST_WIDTH) * going) : Number.POSITIVE_INFINITY;
   const least = FRAME_MIN_ZOOM + (PORTRAIT_MIN_ZOOM_UNDER_WAY - FRAME_MIN_ZOOM) * going;
   const target = Math.max(Math.min(least, params.pixelsPerMeter), Math.min(fit, widest));
-  const leadShare = portrait ? PORTRAIT_LEAD_SHARE : LEAD_SHARE;
   // Eased (a new beacon or a collected one does not make the view jump).
   zoom = Number.isFinite(zoom) ? zoom + (target - zoom) * 0.1 : target;
   const k = zoom;
   // Centred between them, moved toward the hull as far as needed to keep the hull FRAME_MARGIN
   // inside the view when both do not fit; never more sky than the top 15% of the view.
-  // The hull's centre itself keeps HULL_SIDE_ROOM past its half length from the left side (hullReachX).
+  // The hull's centre itself keeps HULL_SIDE_ROOM past its half length from the left side (./framing.ts leadLimits).
   // Right of centre the hull's headlight keeps HULL_GAUGE_ROOM (hullReachRight), clear of the depth gauge's tags.
-  const reachX = Math.max(0, W / 2 - FRAME_MARGIN) / k,
-    hullReachX = Math.max(0, W / 2 - Math.max(FRAME_MARGIN, (SUBMARINE.length / 2) * k + HULL_SIDE_ROOM)) / k,
+  const lead = leadLimits(W, k, portrait),
+    hullReachX = lead.hull,
     hullReachRight =
       Math.max(0, W / 2 - Math.max(FRAME_MARGIN, (SUBMARINE.length / 2 + HEADLIGHT.reach) * k + HULL_GAUGE_ROOM)) / k ||
       // A view too narrow for the beam too (a phone): the bow alone keeps the room.
@@ -2578,7 +2546,7 @@ function draw(): void {
   const ease = 1 - Math.exp(-dtCam / LEAD_EASE);
   camera.leadX += ((portrait ? PORTRAIT_LEAD_TIME : LEAD_TIME) * c.Velocity.x[e]! - camera.leadX) * ease;
   camera.leadY += (LEAD_TIME_Y * c.Velocity.y[e]! - camera.leadY) * ease;
-  const leadX = Math.max(-leadShare * reachX, Math.min(leadShare * reachX, camera.leadX)),
+  const leadX = Math.max(-lead.reach, Math.min(lead.reach, camera.leadX)),
     leadY = Math.max(-LEAD_SHARE * reachY, Math.min(LEAD_SHARE * reachY, camera.leadY));
   const atLeast = (framed: number, hull: number, lead: number) =>
     lead > 0 ? Math.max(framed, hull + lead) : lead < 0 ? Math.min(framed, hull + lead) : framed;
@@ -2588,8 +2556,8 @@ function draw(): void {
   // On a portrait view under way, the framing of a target far ahead leads the hull no further than
   // the look-ahead's limit, so the hull is not pressed into the trailing edge; at rest (the eased
   // look-ahead near 0) the target's ring is framed as far as the hull's room allows, easing between.
-  const underWay = portrait ? Math.min(1, Math.abs(camera.leadX) / Math.max(1e-9, leadShare * reachX)) : 0;
-  const leadMost = hullReachX - underWay * Math.max(0, hullReachX - leadShare * reachX);
+  const underWay = portrait ? Math.min(1, Math.abs(camera.leadX) / Math.max(1e-9, lead.reach)) : 0;
+  const leadMost = hullReachX - underWay * Math.max(0, hullReachX - lead.reach);
   const cx = Math.max(hxw - hullReachRight, Math.min(hxw + leadMost, atLeast(Math.max((hxw + fx) / 2, ringClear), hxw, leadX))),
     cy = Math.min(-H / k / 2 + (0.15 * H) / k, Math.max(hyw - reachY, Math.min(hyw + reachY, atLeast((hyw + fy) / 2, hyw, leadY))));
   camera.x = cx;
