@@ -3070,7 +3070,7 @@ function draw(): void {
     )
       pointer.y = pointer.y < ty + th / 2 ? ty - pointer.height / 2 - 6 : ty + th + pointer.height / 2 + 6;
     // Never over the target's ring and brackets (moved off the hull, the beam or a mine onto it):
-    // beside it instead, right of it where that stays in view, else left.
+    // beside it instead, right of it where that stays in view, else left, else over or under it.
     const ringCrossed = () =>
       aim.onScreen &&
       overlaps(
@@ -3082,8 +3082,15 @@ function draw(): void {
     for (let n = 0; n < 3 && ringCrossed(); n++) {
       const half = aim.frame[2]! / 2,
         rightX = bx + half + pointer.width / 2 + 12;
-      pointer.x = rightX + pointer.width / 2 + 15 <= W - GAUGE_WIDTH ? rightX : bx - half - pointer.width / 2 - 12;
+      const leftX = bx - half - pointer.width / 2 - 12;
       pointer.y = by;
+      if (rightX + pointer.width / 2 + 15 <= W - GAUGE_WIDTH) pointer.x = rightX;
+      else if (leftX - pointer.width / 2 - 7 >= 0) pointer.x = leftX;
+      else {
+        // Neither side fits (a phone): over the brackets, or under them where over leaves the view.
+        const over = aim.frame[1]! - pointer.height / 2 - 6;
+        pointer.y = over - pointer.height / 2 - 2 >= LABEL_TOP ? over : aim.frame[1]! + aim.frame[3]! + pointer.height / 2 + 6;
+      }
       offMines();
       // Beside the ring it may lie in the headlight's tip: moved up or down off it (clear of the ring beside it).
       offBeam();
@@ -3111,6 +3118,7 @@ function draw(): void {
     }
     // Whatever moved it, its pill stays inside the view (LABEL_TOP px under the top).
     pointer.y = Math.min(H - pointer.height / 2 - 4, Math.max(LABEL_TOP + pointer.height / 2 + 2, pointer.y));
+    pointer.x = Math.max(pointer.width / 2 + 8, Math.min(W - pointer.width / 2 - 8, pointer.x));
     aim.label = [pointer.x - pointer.width / 2, pointer.y - pointer.height / 2, pointer.width, pointer.height];
     aim.hull = [hx0 - hr, hy0 - hr, 2 * hr, 2 * hr];
     // The pickup banner ("Beacon 3 of 6") off the label's pill (on a phone it would be drawn over it):
