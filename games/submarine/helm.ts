@@ -9,7 +9,8 @@
  *   up at `HELM.diveSpeed` (`HELM.climbSpeed`) times the stick's share, from the boat, never further
  *   ahead of it than the boat can stop in at `HELM.brake` (plus `HELM.orderLead`) and never nearer.
  *   Let go, the order stays and the boat stops on it without passing it (`approach`), so the gauge
- *   shows at all times where the boat will stop.
+ *   shows at all times where the boat will stop. Held, the order rises over a ridge ahead (`holdFloor`)
+ *   and goes back down to the depth set once past it.
  * - Dive / Rise (held): the vertical thrusters and the planes push at once, so the boat starts to
  *   move before the water in the tanks has moved; the tanks go heavier / lighter than neutral
  *   (enough to carry the boat at the asked speed against drag, more while it is slower than that);
@@ -113,11 +114,29 @@ export interface HelmState {
   planes: number;
   /** What the helm is doing: 'surfaced', 'diving', 'rising', 'steering' (a Nose key), 'braking' or 'holding'. */
   mode: 'surfaced' | 'diving' | 'rising' | 'steering' | 'braking' | 'holding';
+  /**
+   * The depth the pilot set, as the hull's y, m, while a depth is held (NaN or absent: none yet):
+   * `holdY` is this, raised over the seabed ahead (`holdFloor`) and back down to it once past.
+   */
+  setY?: number;
+  /** The `holdY` the hold last wrote, m: a `holdY` changed since (a let-go order, the target's depth) is the depth set. */
+  heldY?: number;
 }
 
 /** A new helm state: screw stopped, tanks empty (the scene's start), no depth held. */
 export function createHelmState(fill = 0): HelmState {
-  return { throttle: 0, fill, trim: 0, holdY: Number.NaN, fore: 0, aft: 0, planes: 0, mode: 'surfaced' };
+  return {
+    throttle: 0,
+    fill,
+    trim: 0,
+    holdY: Number.NaN,
+    fore: 0,
+    aft: 0,
+    planes: 0,
+    mode: 'surfaced',
+    setY: Number.NaN,
+    heldY: Number.NaN,
+  };
 }
 
 const DEG = Math.PI / 180;
@@ -198,6 +217,12 @@ export const HELM = Object.freeze({
    * 8 m/s, for the time the boat takes to start climbing.
    */
   bedClimb: 4,
+  /**
+   * How fast a held order raised over a ridge (`holdFloor`) goes back down to the depth set once
+   * past it, m/s: slow, so that a boat sinking back toward a valley can still stop and climb in time
+   * for the next ridge (`holdFloor` plans the climb from a level boat).
+   */
+  returnSpeed: 2,
   /** Pitch loop of the thrusters: torque per radian of pitch error, N m / rad. */
   pitchGain: 3e6,
   /** Pitch loop of the thrusters: torque per rad/s of pitch rate, N m s / rad. */
@@ -486,6 +511,9 @@ export function steer(world: PhysicsWorld, handles: SubmarineHandles, input: Hel
     // let-go order (approach); the bow dips or rises as a held Dive or Rise does while it goes.
     // Never ordered into the seabed, and slower near the surface as a held Rise is.
     state.holdY = Math.max(ordered, holdFloor(handles.seabed, c.Position.x[e]!, c.Velocity.x[e]!));
+    // Let go on it, the hold keeps the order as the depth set, not the raised one.
+    state.setY = ordered;
+    state.heldY = state.holdY;
     const error = state.holdY - y;
     state.mode = error < -HELM.orderLead ? 'diving' : error > HELM.orderLead ? 'rising' : 'holding';
     vCmd = approach(error, (error < 0 ? HELM.diveSpeed : HELM.climbSpeed) * heaveAsked, brake);
@@ -514,12 +542,23 @@ export function steer(world: PhysicsWorld, handles: SubmarineHandles, input: Hel
     if (state.mode === 'steering' || (state.mode === 'surfaced' && Number.isNaN(state.holdY)))
       state.holdY = y + Math.sign(vy) * stopping(vy, brake);
     if (Number.isNaN(state.holdY) && Math.abs(vy) < HELM.holdSpeed) state.holdY = y;
-    // A held depth never drives the hull into the seabed: over a ridge ahead the order is raised.
-    if (!Number.isNaN(state.holdY)) state.holdY = Math.max(state.holdY, holdFloor(handles.seabed, c.Position.x[e]!, c.Velocity.x[e]!));
+    // A held depth never drives the hull into the seabed: over a ridge ahead the order is raised,
+    // and once past it goes back down to the depth set (it stayed up, and the boat drifted off the
+    // depth the pilot had levelled at). A holdY written since the last step (a let-go order, the
+    // page's stop at the target's depth) is the depth set.
+    if (!Number.isNaN(state.holdY)) {
+      if (!(Number.isFinite(state.setY) && state.holdY === state.heldY)) state.setY = state.holdY;
+      const floor = holdFloor(handles.seabed, c.Position.x[e]!, c.Velocity.x[e]!);
+      // Back down no faster than HELM.returnSpeed, so a boat sinking back can stop for the next rise.
+      state.holdY = Math.max(state.setY!, floor, state.holdY - HELM.returnSpeed * dt);
+      state.heldY = state.holdY;
+    }
     state.mode = Number.isNaN(state.holdY) ? 'braking' : 'holding';
     vCmd = Number.isNaN(state.holdY) ? 0 : approach(state.holdY - y, HELM.climbSpeed, brake);
   }
   if (state.mode !== 'braking' && state.mode !== 'holding' && state.mode !== 'diving' && state.mode !== 'rising') state.holdY = Number.NaN;
+  // Diving or rising on a key, the depth set is wherever the order stops.
+  if (dive || rise || Number.isNaN(state.holdY)) state.setY = Number.NaN;
   if (state.mode === 'surfaced') state.fill = 0;
   else if (Number.isNaN(vCmd)) state.fill = neutral;
   else {

@@ -62,6 +62,7 @@ import {
 import { drawBoat, HEADLIGHT, inHeadlight } from './boat-drawing';
 import { CURRENT_NOTE_LIFE, CURRENT_NOTE_SPEED, currentAt, currentMark, currentNote, drawCurrent, driftInCurrent } from './current';
 import { type EdgeMark, edgeMarks } from './edge-marks';
+import { FRAME_MARGIN, LEAD_SHARE, leadLimits, PORTRAIT_MIN_WIDTH, PORTRAIT_MIN_ZOOM_UNDER_WAY } from './framing';
 import { coastDistance, createHelmState, HELM, type HelmInput, holdFloor, keyHeaveShare, NO_INPUT, noseTrim, steer } from './helm';
 import { createLevelStop, LEVEL_BAND, levelStop, levelWith } from './level-stop';
 import { bestTimes, LEVELS, levelCourse, MAX_BEACONS, MAX_BEST_TIME } from './levels';
@@ -82,7 +83,7 @@ import { pauseBandTop } from './pause-band';
 import { createHeaveTiming, createPressTiming, releasedOrder } from './release';
 import { drawFish } from './sea-life';
 import { type BedAhead, bedAhead, DIVE_STOPPED_WORD, helmWord, seabedInput, touchSeabed } from './seabed';
-import { stickDirection, stickOrder, stickShare } from './stick';
+import { stickDirection, stickHeaveDirection, stickOrder, stickShare } from './stick';
 import { type Glow, layTrail, touchesGlow } from './trail';
 
 const params = {
@@ -259,14 +260,6 @@ const aim = {
 const pickups: (Shown & { text: string; passed?: boolean })[] = [];
 /** How long a pickup's rings and banner last, s of game time. */
 const PICKUP_LIFE = 2;
-/** The framing camera: the hull and the next beacon are kept this far inside the view's edges, px. */
-const FRAME_MARGIN = 60;
-/**
- * Room the framing camera keeps clear between the hull's ends and the view's left and right edges,
- * px: the depth ladder and its figures ("30 m", about 36 px) are drawn left of the stern, so on a
- * phone leading ahead the boat never sits at the edge with its tail cut off and the figures on it.
- */
-const HULL_SIDE_ROOM = 60;
 /**
  * Room the framing camera keeps clear between the tip of the hull's headlight (its bow plus
  * HEADLIGHT.reach, ./boat-drawing.ts) and the view's right edge, px: the depth gauge and its tags
@@ -295,17 +288,8 @@ const LEAD_TIME = 3;
  * seconds after it had stopped, which reads as a late answer and an overshoot).
  */
 const LEAD_TIME_Y = 0.4;
-/** The look-ahead is at most this share of the distance from the view's centre to the framing margin. */
-const LEAD_SHARE = 0.6;
 /** The look-ahead eases toward its target with this time constant, s of game time. */
 const LEAD_EASE = 0.8;
-/**
- * On a portrait view (narrower than tall) under way the framing camera shows at least this much sea
- * across, m: a 390 px phone 80 m (4.9 px/m, the 12 m hull 59 px long), so with the look-ahead over
- * 40 m of the way ahead of the bow is in view. A wider view than tall is not limited by it (the
- * desktop's framing is unchanged).
- */
-const PORTRAIT_MIN_WIDTH = 80;
 /**
  * The same at rest, m: a 390 px phone 60 m (6.5 px/m, the hull 78 px long) once the target is near
  * enough to be framed that close; between rest and `PORTRAIT_SPEED` it eases from this to
@@ -313,31 +297,16 @@ const PORTRAIT_MIN_WIDTH = 80;
  */
 const PORTRAIT_REST_WIDTH = 60;
 /**
- * The least zoom of a portrait view under way, px/m: 4.5 (the hull 54 px long). At rest it is
- * `FRAME_MIN_ZOOM` (3.5), so a target up to about 65 m away is framed while the pilot sets off (the
- * first one at the start); between rest and `PORTRAIT_SPEED` it eases from one to the other. Under way
- * a target further than about 50 m is shown by the edge arrow until it comes into view.
- */
-const PORTRAIT_MIN_ZOOM_UNDER_WAY = 4.5;
-/**
  * The speed ahead, m/s, from which a portrait view counts as fully under way for its framing (above).
  * Backing does not count: a pilot backs onto a target behind, which the view at rest's zoom keeps framed.
  */
 const PORTRAIT_SPEED = 4;
 /**
- * The look-ahead's share of the way to the framing margin (`LEAD_SHARE`) on a portrait view, and
- * there the most the view's centre leads the hull even toward a target far ahead: 0.55, so under
- * way the hull's centre sits about 30% of the view in from its trailing edge (it sat at 21%, its
- * stern near the edge, which read as the boat pressed into the corner), and the bow still has over
- * 60% of the view's width of sea ahead.
- */
-const PORTRAIT_LEAD_SHARE = 0.55;
-/**
  * The look-ahead along x on a portrait view, s (`LEAD_TIME` elsewhere): longer, so that on a narrow
  * phone the view is already at its full lead (the boat near the trailing edge, about 60 m of sea
- * ahead of the bow) from about 8 m/s instead of 12 m/s, and a mine ahead is in view sooner.
+ * ahead of the bow) from under 6 m/s, and a mine ahead is in view sooner.
  */
-const PORTRAIT_LEAD_TIME = 3.4;
+const PORTRAIT_LEAD_TIME = 4;
 /**
  * The camera as last drawn: centre (x, y, m), zoom (px/m), the eased look-ahead (leadX, leadY, m,
  * before its limit), the game time it was eased to (s), the shake now (px) and the view's size (px).
@@ -444,9 +413,12 @@ let lastDrive = 1;
 function heaveAsked(): -1 | 0 | 1 {
   return keyAxis(['s', 'arrowdown'], ['w', 'arrowup']);
 }
-/** The stick pushed down (-1) or up (1) to move its depth order (./stick.ts stickOrder), 0 neither; 0 while a Dive or Rise key is held. */
+/**
+ * The stick pushed down (-1) or up (1) to move its depth order (./stick.ts stickOrder), 0 neither; 0
+ * while a Dive or Rise key is held, and 0 for a push near the horizontal (./stick.ts stickHeaveDirection).
+ */
 function stickHeave(): -1 | 0 | 1 {
-  return heaveAsked() !== 0 ? 0 : stickDirection(stickInput.y, stickInput.x);
+  return heaveAsked() !== 0 ? 0 : stickHeaveDirection(stickInput.y, stickInput.x);
 }
 /** The depth the stick orders, as the hull's height, m (./stick.ts stickOrder; NaN while none): the helm takes the boat there and levels on it. */
 let stickDepth = Number.NaN;
@@ -530,7 +502,8 @@ function heldInput(now: number, drive: -1 | 0 | 1): HelmInput {
     // The stick pushed up or down only keeps the screw as it is (pushing it straight up to rise does
     // not stop the screw); a thumb lifted or resting at the centre lets the screw wind down as a key
     // let go does (a thumb eased back from a push ahead is a let-go); pushed sideways, it drives the screw.
-    keepThrottle: stickInput.held && stickDirection(stickInput.x, stickInput.y) === 0 && stickDirection(stickInput.y, stickInput.x) !== 0,
+    keepThrottle:
+      stickInput.held && stickDirection(stickInput.x, stickInput.y) === 0 && stickHeaveDirection(stickInput.y, stickInput.x) !== 0,
   };
 }
 
@@ -1245,12 +1218,14 @@ app.stage.addChild(mineTag);
  * a pilot pausing to think still sees the mines and beacons ahead.
  */
 const pause = createPauseOverlay({ shadeAlpha: 0.15, fontSize: 22 });
-/** The pause words' band across the scene (drawPause), under the words. */
+/** The pause words' band (drawPause): a pill under the words, centred across the scene. */
 const pauseBand = new Graphics();
 pause.container.addChildAt(pauseBand, 1);
 app.stage.addChild(pause.container);
 /** Height of the pause band, px: the two lines of words and a margin. */
 const PAUSE_BAND = 64;
+/** Room on each side of the pause words in their band, px: the band is as wide as the words and this. */
+const PAUSE_PAD = 18;
 const touch = isTouchDevice();
 /** Whether the pause overlay showed in the last frame drawn by drawPause. */
 let pauseShown = false;
@@ -1258,7 +1233,7 @@ let pauseShown = false;
 const pauseBandBox = [0, 0, 0, 0];
 /**
  * Shows or hides the pause overlay over a `W` x `H` px scene, on top of everything drawn on the stage:
- * its words on a band at the bottom edge, or at the top edge while the boat (at `boatY` px from the
+ * its words on a band as wide as they are (PAUSE_PAD each side), centred at the bottom edge, or at the top edge while the boat (at `boatY` px from the
  * top) would be under the bottom band, so the band stays put as the boat dives (it moved between
  * the edges as the boat crossed the middle of the scene). The band keeps clear of the cards over the
  * scene's edges (the first-time hint, the touch hint, the current's note) and, where there is room
@@ -1292,9 +1267,13 @@ function drawPause(W: number, H: number, boatY: number): void {
     }
     // The bottom edge, or the top one while the boat is near the bottom, clear of the target's label (./pause-band.ts).
     const top = pauseBandTop(upper, lower, PAUSE_BAND, boatY, pointer.visible ? [aim.label[1]!, aim.label[3]!] : null);
-    pauseBand.clear().rect(0, top, W, PAUSE_BAND).fill({ color: 0x050a14, alpha: 0.6 });
+    // A pill round the words, not a band across the scene: the band hid the whole bottom strip (the
+    // seabed and the helm dial) from a pilot pausing to look ahead.
+    const bw = Math.min(W, Math.ceil(pause.words.width) + 2 * PAUSE_PAD),
+      bx = (W - bw) / 2;
+    pauseBand.clear().roundRect(bx, top, bw, PAUSE_BAND, 12).fill({ color: 0x050a14, alpha: 0.6 });
     pause.words.position.set(W / 2, top + PAUSE_BAND / 2);
-    pauseBandBox.splice(0, 4, 0, top, W, PAUSE_BAND);
+    pauseBandBox.splice(0, 4, bx, top, bw, PAUSE_BAND);
   }
 }
 /** The warning's words for each side to pass the mine on (placeMineTag adds how far ahead the mine is: "MINE 40 m"). */
@@ -2001,6 +1980,40 @@ function boxOf(t: Text): [number, number, number, number] {
   const b = t.getBounds();
   return [b.x, b.y, b.width, b.height];
 }
+/** The names of the words drawn on a backing over the seabed in the last frame (backOverSeabed). */
+const backedLabels: string[] = [];
+/**
+ * Puts a dark pill (the beacon pointer's, 0x06213a at 0.85) under each of the scene's small words
+ * that lies over the seabed: the other beacons' tags, the gauge's and the ladder's figures, the
+ * target's depth, the depth order and the glows' points. Over the bed's light rim and rocks they
+ * read at under 3:1 (the beacons' yellow on the rim's tan); on the pill at over 10:1. A `W` px wide
+ * view centred on x = `cx` (m) at `k` px a metre, `sy` world height to screen px. Call it after
+ * `declutter`, which hides some of them.
+ */
+function backOverSeabed(W: number, cx: number, k: number, sy: (y: number) => number): void {
+  backedLabels.length = 0;
+  const overBed = ([x0, y0, w, h]: readonly number[]): boolean => {
+    for (let px = Math.max(0, x0!); ; px = Math.min(x0! + w!, px + 4)) {
+      if (sy(seabedHeight(handles.seabed, cx + (px - W / 2) / k)) < y0! + h! + 2) return true;
+      if (px >= x0! + w!) return false;
+    }
+  };
+  const small: [string, Text | undefined][] = [
+    ['target depth', gaugeTarget],
+    ['order', orderTag],
+    ...ladderMarks.map((m): [string, Text] => ['ladder', m]),
+    ...tags.slice(0, otherTags).map((t): [string, Text] => ['beacon tag', t]),
+    ...popLabels.map((t): [string, Text] => ['glow points', t]),
+    ...gaugeMarks.map((t): [string, Text] => ['gauge figure', t]),
+  ];
+  for (const [name, t] of small) {
+    if (!t?.visible || t.alpha <= 0 || t.text === '') continue;
+    const [x, y, w, h] = boxOf(t);
+    if (w <= 0 || !overBed([x, y, w, h])) continue;
+    g.roundRect(x - 4, y - 1, w + 8, h + 2, Math.min(8, h / 2 + 1)).fill({ color: 0x06213a, alpha: 0.85 * t.alpha });
+    backedLabels.push(name);
+  }
+}
 /**
  * The words over the scene as last drawn, after `declutter` (tests): each shown one's name and box
  * (x, y, width, height, px).
@@ -2192,6 +2205,8 @@ function textBox(text: Text): [number, number, number, number] {
   return [text.x - text.width, text.y - text.height / 2, text.width, text.height];
 }
 
+/** The beacon pointer's pill keeps at least this far under the view's top edge, px. */
+const LABEL_TOP = 4;
 /** How far the beacon pointer's pill is kept above the seabed under it, px. */
 const LABEL_BED_CLEAR = 6;
 
@@ -2508,16 +2523,15 @@ function draw(): void {
   const widest = portrait ? W / (PORTRAIT_REST_WIDTH + (PORTRAIT_MIN_WIDTH - PORTRAIT_REST_WIDTH) * going) : Number.POSITIVE_INFINITY;
   const least = FRAME_MIN_ZOOM + (PORTRAIT_MIN_ZOOM_UNDER_WAY - FRAME_MIN_ZOOM) * going;
   const target = Math.max(Math.min(least, params.pixelsPerMeter), Math.min(fit, widest));
-  const leadShare = portrait ? PORTRAIT_LEAD_SHARE : LEAD_SHARE;
   // Eased (a new beacon or a collected one does not make the view jump).
   zoom = Number.isFinite(zoom) ? zoom + (target - zoom) * 0.1 : target;
   const k = zoom;
   // Centred between them, moved toward the hull as far as needed to keep the hull FRAME_MARGIN
   // inside the view when both do not fit; never more sky than the top 15% of the view.
-  // The hull's centre itself keeps HULL_SIDE_ROOM past its half length from the left side (hullReachX).
+  // The hull's centre itself keeps HULL_SIDE_ROOM past its half length from the left side (./framing.ts leadLimits).
   // Right of centre the hull's headlight keeps HULL_GAUGE_ROOM (hullReachRight), clear of the depth gauge's tags.
-  const reachX = Math.max(0, W / 2 - FRAME_MARGIN) / k,
-    hullReachX = Math.max(0, W / 2 - Math.max(FRAME_MARGIN, (SUBMARINE.length / 2) * k + HULL_SIDE_ROOM)) / k,
+  const lead = leadLimits(W, k, portrait),
+    hullReachX = lead.hull,
     hullReachRight =
       Math.max(0, W / 2 - Math.max(FRAME_MARGIN, (SUBMARINE.length / 2 + HEADLIGHT.reach) * k + HULL_GAUGE_ROOM)) / k ||
       // A view too narrow for the beam too (a phone): the bow alone keeps the room.
@@ -2532,7 +2546,7 @@ function draw(): void {
   const ease = 1 - Math.exp(-dtCam / LEAD_EASE);
   camera.leadX += ((portrait ? PORTRAIT_LEAD_TIME : LEAD_TIME) * c.Velocity.x[e]! - camera.leadX) * ease;
   camera.leadY += (LEAD_TIME_Y * c.Velocity.y[e]! - camera.leadY) * ease;
-  const leadX = Math.max(-leadShare * reachX, Math.min(leadShare * reachX, camera.leadX)),
+  const leadX = Math.max(-lead.reach, Math.min(lead.reach, camera.leadX)),
     leadY = Math.max(-LEAD_SHARE * reachY, Math.min(LEAD_SHARE * reachY, camera.leadY));
   const atLeast = (framed: number, hull: number, lead: number) =>
     lead > 0 ? Math.max(framed, hull + lead) : lead < 0 ? Math.min(framed, hull + lead) : framed;
@@ -2542,8 +2556,8 @@ function draw(): void {
   // On a portrait view under way, the framing of a target far ahead leads the hull no further than
   // the look-ahead's limit, so the hull is not pressed into the trailing edge; at rest (the eased
   // look-ahead near 0) the target's ring is framed as far as the hull's room allows, easing between.
-  const underWay = portrait ? Math.min(1, Math.abs(camera.leadX) / Math.max(1e-9, leadShare * reachX)) : 0;
-  const leadMost = hullReachX - underWay * Math.max(0, hullReachX - leadShare * reachX);
+  const underWay = portrait ? Math.min(1, Math.abs(camera.leadX) / Math.max(1e-9, lead.reach)) : 0;
+  const leadMost = hullReachX - underWay * Math.max(0, hullReachX - lead.reach);
   const cx = Math.max(hxw - hullReachRight, Math.min(hxw + leadMost, atLeast(Math.max((hxw + fx) / 2, ringClear), hxw, leadX))),
     cy = Math.min(-H / k / 2 + (0.15 * H) / k, Math.max(hyw - reachY, Math.min(hyw + reachY, atLeast((hyw + fy) / 2, hyw, leadY))));
   camera.x = cx;
@@ -2969,6 +2983,9 @@ function draw(): void {
       // more out from the beacon), so the label covers neither.
       pointer.x = bx;
       pointer.y = by - Math.max(14, BEACON_CATCH * k) - 12 - pointer.height / 2 - 4;
+      // A beacon near the view's top: under the ring instead (above, the label ran off the top,
+      // under the status bar).
+      if (pointer.y - pointer.height / 2 - 2 < LABEL_TOP) pointer.y = by + Math.max(14, BEACON_CATCH * k) + 12 + pointer.height / 2 + 4;
     }
     // Kept inside the view (a long label beside a badge at a side edge).
     // (its pill is 7 px wider each side than the text and the switch's ring 3 px more; 5 px more
@@ -3053,7 +3070,7 @@ function draw(): void {
     )
       pointer.y = pointer.y < ty + th / 2 ? ty - pointer.height / 2 - 6 : ty + th + pointer.height / 2 + 6;
     // Never over the target's ring and brackets (moved off the hull, the beam or a mine onto it):
-    // beside it instead, right of it where that stays in view, else left.
+    // beside it instead, right of it where that stays in view, else left, else over or under it.
     const ringCrossed = () =>
       aim.onScreen &&
       overlaps(
@@ -3065,8 +3082,15 @@ function draw(): void {
     for (let n = 0; n < 3 && ringCrossed(); n++) {
       const half = aim.frame[2]! / 2,
         rightX = bx + half + pointer.width / 2 + 12;
-      pointer.x = rightX + pointer.width / 2 + 15 <= W - GAUGE_WIDTH ? rightX : bx - half - pointer.width / 2 - 12;
+      const leftX = bx - half - pointer.width / 2 - 12;
       pointer.y = by;
+      if (rightX + pointer.width / 2 + 15 <= W - GAUGE_WIDTH) pointer.x = rightX;
+      else if (leftX - pointer.width / 2 - 7 >= 0) pointer.x = leftX;
+      else {
+        // Neither side fits (a phone): over the brackets, or under them where over leaves the view.
+        const over = aim.frame[1]! - pointer.height / 2 - 6;
+        pointer.y = over - pointer.height / 2 - 2 >= LABEL_TOP ? over : aim.frame[1]! + aim.frame[3]! + pointer.height / 2 + 6;
+      }
       offMines();
       // Beside the ring it may lie in the headlight's tip: moved up or down off it (clear of the ring beside it).
       offBeam();
@@ -3092,6 +3116,9 @@ function draw(): void {
       const above = ty - pointer.height / 2 - 8;
       pointer.y = above >= pointer.height / 2 + 4 ? above : ty + th + pointer.height / 2 + 8;
     }
+    // Whatever moved it, its pill stays inside the view (LABEL_TOP px under the top).
+    pointer.y = Math.min(H - pointer.height / 2 - 4, Math.max(LABEL_TOP + pointer.height / 2 + 2, pointer.y));
+    pointer.x = Math.max(pointer.width / 2 + 8, Math.min(W - pointer.width / 2 - 8, pointer.x));
     aim.label = [pointer.x - pointer.width / 2, pointer.y - pointer.height / 2, pointer.width, pointer.height];
     aim.hull = [hx0 - hr, hy0 - hr, 2 * hr, 2 * hr];
     // The pickup banner ("Beacon 3 of 6") off the label's pill (on a phone it would be drawn over it):
@@ -3210,6 +3237,7 @@ function draw(): void {
   // The hull's box on the screen (level, its sail included): the tags that only add are kept off it.
   const hr = Math.max(SUBMARINE.length / 2, SUBMARINE.height / 2 + 2) * k;
   declutter(H, [sx(hxw) - (SUBMARINE.length / 2) * k, sy(hyw) - hr / 2, SUBMARINE.length * k, hr]);
+  backOverSeabed(W, cx, k, sy);
   drawHitPill();
   drawPause(W, H, sy(hyw));
   // The hull gauge at a hit: red and enlarged, fading over GAUGE_FLASH s of game time.
@@ -3323,6 +3351,8 @@ shell.expose({
   depthLadder: () => ({ alpha: ladder.alpha, marks: ladderMarks.filter((m) => m.visible).map((m) => m.text) }),
   /** The words over the scene as last drawn, kept off each other: each shown one's name and box (x, y, width, height, px). */
   labels: () => shownLabels.map((l) => ({ name: l.name, box: [...l.box] })),
+  /** The names of the small words drawn on a backing pill over the seabed in the last frame (backOverSeabed). */
+  labelBacks: () => [...backedLabels],
   /**
    * The depth gauge's tags as last drawn: the boat's depth and the target's, each x, y, width,
    * height, px (zeros while hidden), and their words ("you 31 m", "beacon A 27 m"; '' while hidden).

@@ -180,6 +180,34 @@ describe('submarine on the seabed', () => {
     expect(b.helm.holdY).toBeGreaterThan(held + 5); // the order was raised, not the hull knocked up
   });
 
+  it('a depth held at full ahead over a ridge: raised over it, and back within 0.5 m of the depth set 20 s after (it stayed 24 m up)', () => {
+    // Issue 34: "the boat should level at [the depth set] and stay; it drifts off". A made bed: flat
+    // 100 m down with a ridge rising to 40 m down (x 150 to 250 m); the depth set 60 m down.
+    // Tolerance 0.5 m: the hold's settling at full ahead.
+    const b = boat(40, 0);
+    const bed = b.h.seabed;
+    for (let i = 0; i < bed.y.length; i++) {
+      const x = bed.x0 + i * bed.dx;
+      bed.y[i] = -100 + Math.max(0, 60 - Math.abs(x - 200) * 1.2);
+    }
+    const c = b.world.components;
+    c.Position.y[b.h.hull] = -60;
+    b.helm.holdY = -60;
+    b.helm.mode = 'holding';
+    run(b, {}, 1);
+    let top = -100;
+    for (let t = 0; t < 30 && c.Position.x[b.h.hull]! < 260; t += 0.5) {
+      run(b, { ahead: true }, 0.5);
+      top = Math.max(top, c.Position.y[b.h.hull]!);
+    }
+    run(b, { ahead: true }, 20);
+    const y = c.Position.y[b.h.hull]!;
+    console.log(`over a ridge 40 m down, the depth set 60 m: rose to ${(-top).toFixed(1)} m, ${(-y).toFixed(1)} m 20 s after`);
+    expect(b.touched).toBe(false);
+    expect(top).toBeGreaterThan(-40); // it rose over the ridge
+    expect(Math.abs(y + 60)).toBeLessThan(0.5);
+  });
+
   it('at most one hit per cooldown: a bump within it costs none, a hard bump past it costs one', () => {
     const b = boat(0.5);
     const c = b.world.components,

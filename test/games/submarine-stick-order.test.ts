@@ -10,7 +10,7 @@ import { createPhysicsWorld, step } from '@bitphysics/physics';
 import { SUBMARINE, SUBMARINE_NEUTRAL_FILL, submarine } from '@bitphysics/projects';
 import { describe, expect, it } from 'vitest';
 import { createHelmState, KEY_HEAVE_SHARE, NO_INPUT, steer } from '../../games/submarine/helm';
-import { STICK_ORDER_LEAD, STICK_ORDER_SPEED, stickOrder } from '../../games/submarine/stick';
+import { STICK_ORDER_LEAD, STICK_ORDER_SPEED, stickHeaveDirection, stickOrder, stickShare } from '../../games/submarine/stick';
 
 /** A neutral boat hovering at height `y` on a calm sea over open water, holding that depth. */
 function hovering(y: number) {
@@ -77,5 +77,29 @@ describe('submarine stick order', () => {
       k = -6 - key.c.Position.y[key.e]!;
     console.log(`2 s: stick rim ${r.toFixed(2)} m down, Dive key ${k.toFixed(2)} m`);
     expect(Math.abs(r - k)).toBeLessThan(0.05 * k);
+  });
+
+  it('levelled and then held on Ahead with the thumb 10 degrees low, the boat stays within 0.5 m of its depth for 20 s (it drifted 32 m)', () => {
+    // Issue 34: "the stick sets a target depth and the boat should level at it and stay; it drifts
+    // off". A thumb pushed to the rim for Ahead is seldom level: 10 degrees low (and 18 degrees
+    // low still dives: test/games/submarine-stick.test.ts). Tolerance 0.5 m: the hold's own
+    // settling at full ahead, well under the 32 m the order ran before.
+    const b = hovering(-30);
+    b.c.Velocity.x[b.e] = 8;
+    const a = (10 * Math.PI) / 180,
+      x = Math.cos(a),
+      y = -Math.sin(a);
+    let order = Number.NaN;
+    const dt = b.world.dt;
+    for (let i = 0; i < 20 / dt; i++) {
+      const dir = stickHeaveDirection(y, x);
+      order = stickOrder(order, dir, stickShare(y, false), dt, b.c.Position.y[b.e]!, b.helm.holdY, -1000, -SUBMARINE.height / 2);
+      const input = { ...NO_INPUT, ahead: true, drive: stickShare(x, false), heave: KEY_HEAVE_SHARE };
+      steer(b.world, b.h, Number.isFinite(order) ? { ...input, orderY: order } : input, b.helm);
+      step(b.world);
+    }
+    const off = b.c.Position.y[b.e]! + 30;
+    console.log(`thumb 10 degrees low on Ahead for 20 s: ${off.toFixed(2)} m off the depth levelled at`);
+    expect(Math.abs(off)).toBeLessThan(0.5);
   });
 });

@@ -4,7 +4,15 @@
  */
 
 import { describe, expect, it } from 'vitest';
-import { STICK_AXIS, STICK_DEAD, STICK_MIN_SHARE, stickDirection, stickShare } from '../../games/submarine/stick';
+import {
+  STICK_AXIS,
+  STICK_DEAD,
+  STICK_LEVEL_ANGLE,
+  STICK_MIN_SHARE,
+  stickDirection,
+  stickHeaveDirection,
+  stickShare,
+} from '../../games/submarine/stick';
 
 /** The stick's push for a thumb at (dx, dy) px (y down) on a phone's 56 px reach, clamped to the unit disc as game-kit's stick reports it (y up). */
 function push(dx: number, dy: number): { x: number; y: number } {
@@ -18,6 +26,7 @@ describe('submarine stick', () => {
     const p = push(60, 20);
     expect(stickDirection(p.x, p.y)).toBe(1); // ahead
     expect(stickDirection(p.y, p.x)).toBe(-1); // dive
+    expect(stickHeaveDirection(p.y, p.x)).toBe(-1); // 18 degrees low moves the depth order
     expect(stickShare(p.x, false)).toBeCloseTo((Math.abs(p.x) - STICK_AXIS) / (1 - STICK_AXIS), 12);
     // More push down, more dive: the share grows with the push from STICK_MIN_SHARE to 1 at the rim.
     let last = 0;
@@ -42,5 +51,22 @@ describe('submarine stick', () => {
     expect(stickShare(0.3, true)).toBe(1);
     expect(() => stickDirection(2, 0)).toThrow(/stickDirection: v/);
     expect(() => stickShare(Number.NaN, false)).toThrow(/stickShare: v/);
+  });
+
+  it('a push within STICK_LEVEL_ANGLE (14 degrees) of the horizontal does not move the depth order; steeper, it does', () => {
+    // Issue 34: Ahead held 10 degrees low ran the order down 1.6 m/s (the boat drifted off its depth).
+    for (const deg of [0, 5, 10, 13]) {
+      const p = push(56 * Math.cos((deg * Math.PI) / 180), 56 * Math.sin((deg * Math.PI) / 180));
+      expect(stickDirection(p.y, p.x), `${deg} degrees`).toBe(deg === 0 ? 0 : deg < 10 ? 0 : -1);
+      expect(stickHeaveDirection(p.y, p.x), `${deg} degrees`).toBe(0);
+      expect(stickHeaveDirection(-p.y, -p.x), `${deg} degrees up, astern`).toBe(0);
+    }
+    for (const deg of [15, 30, 45, 90]) {
+      const p = push(56 * Math.cos((deg * Math.PI) / 180), 56 * Math.sin((deg * Math.PI) / 180));
+      expect(stickHeaveDirection(p.y, p.x), `${deg} degrees`).toBe(-1);
+      expect(stickHeaveDirection(-p.y, p.x), `${deg} degrees up`).toBe(1);
+    }
+    expect(STICK_LEVEL_ANGLE).toBeCloseTo((14 * Math.PI) / 180, 12);
+    expect(() => stickHeaveDirection(0, 2)).toThrow(/stickDirection: other/);
   });
 });
