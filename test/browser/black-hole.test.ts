@@ -1769,9 +1769,11 @@ describe('black hole, two fingers on the pad (issue 34)', () => {
   type Two = { bh: { thrust: string }; paused: boolean };
   /** The arrows lit on the pad now. */
   const lit = (): string[] => [...document.querySelectorAll<HTMLElement>('.bh-pad button.on')].map((b) => b.dataset.dir!).sort();
+  // One page for both sides (reset and unpaused between them): each case lifts every finger before it ends.
+  const page = sharedPage(() => h, 'black-hole', { viewport: { width: 390, height: 844 }, touch: true, query: { level: 1 } });
   for (const side of ['right', 'left'] as const)
     it(`finger 1 on ↑, finger 2 on ${side === 'right' ? '→' : '←'}: lifting finger 2 leaves ↑ held and lit, lifting finger 1 leaves ${side}`, async () => {
-      const p = await h.openGame('black-hole', { viewport: { width: 390, height: 844 }, touch: true, query: { level: 1 } });
+      const p = page();
       const mid = async (d: string) => {
         const b = (await p.page.getByRole('button', { name: `thrust ${d}`, exact: true }).boundingBox())!;
         return { x: b.x + b.width / 2, y: b.y + b.height / 2 };
@@ -1818,7 +1820,6 @@ describe('black hole, two fingers on the pad (issue 34)', () => {
       expect(await p.page.evaluate(lit)).toEqual([]);
       expect(p.errors).toEqual([]);
       await cdp.detach();
-      await p.close();
     }, 120_000);
 });
 
