@@ -300,21 +300,77 @@ export type HoldEnd = 'cleared' | 'fell' | 'lost' | 'timeout';
  * @throws RangeError unless hold > 0 and limit > hold.
  */
 export function singleHold(level: number, seed: number, hold: number, field?: FieldSize, wait = 0, limit = 20, rings = true): HoldEnd {
+  return flyHold(level, seed, hold, field, wait, limit, rings).end;
+}
+
+/** @throws RangeError unless hold > 0, wait >= 0 and limit > wait + hold (`singleHold`'s arguments). */
+function checkHold(hold: number, wait: number, limit: number): void {
   if (!(hold > 0 && wait >= 0 && limit > wait + hold))
     throw new RangeError(`singleHold: hold must be > 0 s, wait >= 0 s and limit > wait + hold, got ${hold}, ${wait}, ${limit}`);
+}
+
+/** `singleHold`'s flight: how it ended, the loop step it ended at (`end` 'timeout': the last), and the game's step, s. */
+function flyHold(
+  level: number,
+  seed: number,
+  hold: number,
+  field: FieldSize | undefined,
+  wait: number,
+  limit: number,
+  rings: boolean,
+): { end: HoldEnd; at: number; dt: number } {
+  checkHold(hold, wait, limit);
   const g = createBlackHoleGame({ seed, lives: 9, ...(field ? { field } : {}) });
   const run = startLevel(g, level);
   if (!rings) run.rings.length = 0;
   const dt = g.world.dt;
   const from = Math.round(wait / dt),
     to = from + Math.round(hold / dt);
-  for (let k = 0; k * dt < limit; k++) {
+  let k = 0;
+  for (; k * dt < limit; k++) {
     const want: Thrust = k >= from && k < to && canThrust(g, run) ? 'up' : 'none';
     if (g.thrust !== want) setThrust(g, want);
     const event = stepLevel(g, run);
-    if (event === 'cleared') return 'cleared';
-    if (event === 'fell' || event === 'over') return 'fell';
-    if (event === 'lost') return 'lost';
+    if (event === 'cleared') return { end: 'cleared', at: k, dt };
+    if (event === 'fell' || event === 'over') return { end: 'fell', at: k, dt };
+    if (event === 'lost') return { end: 'lost', at: k, dt };
   }
-  return 'timeout';
+  return { end: 'timeout', at: k, dt };
+}
+
+/**
+ * `singleHold` for each of `holds` (s, each > 0) on one level, seed, field and wait, flying fewer
+ * games: two flights get the same inputs from the same start until the shorter hold lets go, and the
+ * steps are deterministic, so where a longer hold's flight ended (a fall, the line) at a step while
+ * ↑ was still held in a shorter one, the shorter one ends the same way at that step and is not flown.
+ * The holds are flown longest first; the answers are in the order of `holds`.
+ * @throws RangeError as `singleHold` does.
+ */
+export function singleHolds(
+  level: number,
+  seed: number,
+  holds: readonly number[],
+  field?: FieldSize,
+  wait = 0,
+  limit = 20,
+  rings = true,
+): HoldEnd[] {
+  for (const hold of holds) checkHold(hold, wait, limit);
+  const out: HoldEnd[] = new Array(holds.length);
+  const order = holds.map((_, i) => i).sort((a, b) => holds[b]! - holds[a]!);
+  // The earliest end among the flights flown so far (all of holds as long as the next or longer).
+  let first: { end: HoldEnd; at: number; dt: number } | null = null;
+  for (const i of order) {
+    const hold = holds[i]!;
+    // The first step without ↑ in this flight, as `flyHold` counts it.
+    const to = first === null ? 0 : Math.round(wait / first.dt) + Math.round(hold / first.dt);
+    if (first !== null && first.at < to) {
+      out[i] = first.end;
+      continue;
+    }
+    const f = flyHold(level, seed, hold, field, wait, limit, rings);
+    out[i] = f.end;
+    if (first === null || f.at < first.at) first = f;
+  }
+  return out;
 }

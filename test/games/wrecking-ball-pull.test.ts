@@ -110,13 +110,17 @@ function play(g: Gesture, untilSlip = false): { toHit: number; fell: boolean; ma
   return { toHit: Number.POSITIVE_INFINITY, fell: piece.fallen, mast, early, slipping };
 }
 
-/** Steps 2.5 s more (the structure falling) and says whether the piece fell. */
+/**
+ * Steps up to 2.5 s more (the structure falling) and says whether the piece fell. It stops at the
+ * step the piece is scored fallen: `scorePieces` never sets a piece standing again, so the steps
+ * after that could not change the answer.
+ */
 function finish(
   world: ReturnType<typeof createPhysicsWorld>,
   h: ReturnType<typeof buildWreckingBall>,
   piece: { fallen: boolean },
 ): boolean {
-  for (let k = 0; k < 150; k++) {
+  for (let k = 0; k < 150 && !piece.fallen; k++) {
     step(world);
     scorePieces(world, h.pieces);
   }
