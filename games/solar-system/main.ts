@@ -460,7 +460,7 @@ const WAIT_PLAN_SAMPLES = 100;
 let atWindow = Number.NaN;
 /**
  * World time, days, the player last stopped Wait short of a window (NaN for none): the date line
- * then says how far the window is, not only "time waits" (a stop there read as a window).
+ * then says how far the next window is, not only "time waits" (a stop there read as a window).
  */
 let waitStoppedAt = Number.NaN;
 /** performance.now() Wait was last pressed (a short press is a tap: a run to the next window). */
@@ -2232,9 +2232,11 @@ style.textContent = `
    buttons never wrap to a second row and move under the finger. */
 @media (max-width: 440px) {
   .ss-status-row { height: ${STATUS_ROW.phone}; }
-  /* The brief shows on a phone too, so the first mission's is seen; it and the hint that takes its
-     place share one slot four 13 px lines tall (the longest hints), the plan's three. */
-  .ss-status .ss-brief, .ss-status .ss-hint { min-height: ${4 * 1.4 * 13}px; }
+  /* The brief shows on a phone too, so the first mission's is seen: two 13 px lines kept for it (the
+     briefs are two; four, the longest hints', left a 36 px empty band over the plan); the hint
+     that takes its place four, the plan's three. */
+  .ss-status .ss-brief { min-height: ${2 * 1.4 * 13}px; }
+  .ss-status .ss-hint { min-height: ${4 * 1.4 * 13}px; }
   .ss-status .ss-line { min-height: ${3 * 1.4 * 13}px; }
   .bp-touchbar.ss-pad { display: grid; grid-auto-flow: column; grid-auto-columns: auto; justify-content: stretch; gap: 4px; }
   .bp-touchbar.ss-pad button { min-width: 44px; padding: 0 3px; font-size: 14px; white-space: normal; line-height: 1.05; }
@@ -2521,15 +2523,12 @@ function forecastIsNow(): boolean {
 }
 
 /**
- * Where the nearest launch window of `m`'s target is from now, for the date line after the player
- * stopped Wait short of it: "Wait stopped: Mars’s window in 181 days" (or "was 12 days ago").
+ * How far the next launch window of `m`'s target is, for the date line after the player stopped
+ * Wait short of it: "Wait stopped · Mars’s next window in 181 days" (a stop there read as a window).
  */
 function windowWords(m: Mission): string {
-  const w = launchWindow();
-  const ahead = w.next <= w.period - w.next;
-  const n = Math.round(ahead ? w.next : w.period - w.next);
-  const days = `${n} day${n === 1 ? '' : 's'}`;
-  return `Wait stopped: ${m.target}’s window ${ahead ? `in ${days}` : `was ${days} ago`}`;
+  const n = Math.round(launchWindow().next);
+  return `Wait stopped · ${m.target}’s next window in ${n} day${n === 1 ? '' : 's'}`;
 }
 
 /** G M_sun in the world now, AU^3/day^2. */
