@@ -51,8 +51,9 @@ for (const n of [2, 3, 4]) {
     const f = m.forecastLaunch(world, handles, mission, aim, BASE);
     const rings = m.aimRings(world, handles, mission, aim);
     const target = [...m.heliocentricState(world, handles, handles.bodies[mission.target])];
-    const words = m.forecastWords(mission.target, f, mission.zone, target, f.outcome === 'arrived' ? rings : undefined)[0];
-    const isClose = /close/.test(words);
+    // The line names an arrival's stars: "close" here is a line reading ✓ with three of them.
+    const words = m.forecastWords(mission.target, f, mission.zone, target, '★'.repeat(m.skillStars(n - 1, mission, speed, rings, 0)))[0];
+    const isClose = /★★★/.test(words);
     if (isClose) close++;
     if (f.outcome !== 'arrived') continue;
     arrived++;

@@ -4,9 +4,9 @@
  * not stopped at the ring's edge as the flight and its forecast are (an arrival's forecast closest
  * approach is always just under one ring, so it could not tell a launch that grazes the ring from
  * one that runs through its middle). Three stars from mission 2 want both a cheap launch and one
- * within STAR_RINGS (`skillStars`), and the coarse words' "close" is that band
- * (./meeting-words.ts), so the words say something a player can act on and a launch on "a little"
- * still arrives but earns two stars at most. DOM-free, for Node tests.
+ * within STAR_RINGS (`skillStars`); the line before a launch that arrives shows the stars it earns
+ * (./meeting-words.ts forecastWords), so an arrival off the centre reads "✓ … · ★★" and the player
+ * can centre it. DOM-free, for Node tests.
  */
 
 import type { PhysicsWorld } from '@bitphysics/physics';

@@ -123,7 +123,7 @@ import { aimRings, skillStars } from './aim-depth';
 import { displayRadius, toDisplay } from './distance-scale';
 import { copyForecast, createForecast, ForecastJob } from './forecast';
 import { keplerState } from './kepler';
-import { forecastWords, meetingWords } from './meeting-words';
+import { forecastWords, meetingWords, staleWords } from './meeting-words';
 import {
   type Aim,
   BURN_STEP,
@@ -153,7 +153,7 @@ import {
 } from './missions';
 import { meetingPoint, orbitCrossings, orbitRadiusToward, orbitReach, pathDay, targetLag } from './orbit-crossing';
 import { type TagBox, tagPlace } from './tag-place';
-import { createWaitState, NEAR_WINDOW_DAYS, nextLaunchWindow, waitTick } from './wait-pace';
+import { createWaitState, NEAR_WINDOW_DAYS, nextLaunchWindow, releaseRunsOn, waitTick } from './wait-pace';
 
 /** Scene units per display AU. */
 const UNITS_PER_AU = 10;
@@ -458,6 +458,11 @@ const waitPlan = createFlightPlan();
 const WAIT_PLAN_SAMPLES = 100;
 /** World time, days, a run last stopped at a launch window (NaN for none): the date line says so. */
 let atWindow = Number.NaN;
+/**
+ * World time, days, the player last stopped Wait short of a window (NaN for none): the date line
+ * then says how far the next window is, not only "time waits" (a stop there read as a window).
+ */
+let waitStoppedAt = Number.NaN;
 /** performance.now() Wait was last pressed (a short press is a tap: a run to the next window). */
 let waitPressedAt = -Infinity;
 
@@ -471,7 +476,7 @@ function pressWait(): void {
   waitPressedAt = performance.now();
   heldTicks = 0;
   stopPress = phase === 'aim' && wait.mode === 'run';
-  if (stopPress) stopWait();
+  if (stopPress) stopWait(true);
   else if (phase === 'aim') Object.assign(wait, { mode: 'held', waited: 0, pause: 0, rate: 0 });
 }
 /**
@@ -484,11 +489,15 @@ function releaseWait(): void {
   waiting = false;
   if (stopPress || wait.mode !== 'held') return;
   const tap = performance.now() - waitPressedAt < WAIT_TAP_MS || heldTicks < WAIT_TAP_TICKS;
-  if (tap && wait.pause === 0) wait.mode = 'run';
-  else stopWait();
+  if ((tap && wait.pause === 0) || releaseRunsOn(wait, windowNearness, aimMiss)) wait.mode = 'run';
+  else stopWait(true);
 }
-/** Stops Wait's time (a hold's or a tap's run). */
-function stopWait(): void {
+/**
+ * Stops Wait's time (a hold's or a tap's run); `player` when the player stopped it (let go, or
+ * tapped Stop): the date line then says how far the window is (`waitStoppedAt`).
+ */
+function stopWait(player = false): void {
+  if (player && wait.mode !== 'off') waitStoppedAt = shell.world.time;
   wait.mode = 'off';
   wait.pause = 0;
   windowNearness = Number.POSITIVE_INFINITY;
@@ -2223,9 +2232,11 @@ style.textContent = `
    buttons never wrap to a second row and move under the finger. */
 @media (max-width: 440px) {
   .ss-status-row { height: ${STATUS_ROW.phone}; }
-  /* The brief shows on a phone too, so the first mission's is seen; it and the hint that takes its
-     place share one slot four 13 px lines tall (the longest hints), the plan's three. */
-  .ss-status .ss-brief, .ss-status .ss-hint { min-height: ${4 * 1.4 * 13}px; }
+  /* The brief shows on a phone too, so the first mission's is seen: two 13 px lines kept for it (the
+     briefs are two; four, the longest hints', left a 36 px empty band over the plan); the hint
+     that takes its place four, the plan's three. */
+  .ss-status .ss-brief { min-height: ${2 * 1.4 * 13}px; }
+  .ss-status .ss-hint { min-height: ${4 * 1.4 * 13}px; }
   .ss-status .ss-line { min-height: ${3 * 1.4 * 13}px; }
   .bp-touchbar.ss-pad { display: grid; grid-auto-flow: column; grid-auto-columns: auto; justify-content: stretch; gap: 4px; }
   .bp-touchbar.ss-pad button { min-width: 44px; padding: 0 3px; font-size: 14px; white-space: normal; line-height: 1.05; }
@@ -2480,6 +2491,7 @@ function verdict(m: Mission): [string, string] {
   if (phase === 'aim' && !verdictShown()) return reading(m);
   if (f.outcome === 'sun') return [`✗ falls into the Sun${scheme}`, 'bad'];
   if (phase === 'aim') {
+    if (f.outcome === 'arrived' && !forecastIsNow()) return staleWords(m.target);
     if (f.outcome === 'arrived')
       return [
         `✓ meets ${m.target} on day ${Math.round(f.end)} · ${starText(skillStars(missionIndex, m, aim.speed, aimDepth(), 0))}${scheme}`,
@@ -2498,6 +2510,25 @@ function verdict(m: Mission): [string, string] {
   }
   if (f.outcome === 'arrived') return [`✓ arrives on day ${Math.round(f.end)}${scheme}`, 'ok'];
   return [`✗ misses ${m.target}: ${missWords(f.closest, m.zone, burnChange())}${scheme}`, 'bad'];
+}
+
+/**
+ * Whether the forecast shown is of the launch made now: worked out for this moment and aim, with
+ * time standing (not paused: a paused clock stands too). While time runs the forecast is of a moment
+ * already gone (worked out over frames while the world steps on: 12 days behind at 15 days a
+ * second), so its ✓ is not shown: a launch on it missed.
+ */
+function forecastIsNow(): boolean {
+  return forecastKey !== '' && forecastKey === wantedKey() && (shell.paused || currentRate() === 0);
+}
+
+/**
+ * How far the next launch window of `m`'s target is, for the date line after the player stopped
+ * Wait short of it: "Wait stopped · Mars’s next window in 181 days" (a stop there read as a window).
+ */
+function windowWords(m: Mission): string {
+  const n = Math.round(launchWindow().next);
+  return `Wait stopped · ${m.target}’s next window in ${n} day${n === 1 ? '' : 's'}`;
 }
 
 /** G M_sun in the world now, AU^3/day^2. */
@@ -2555,13 +2586,16 @@ function reading(m: Mission): [string, string] {
 
 /**
  * The reading line's verdict on the meeting at point `i` of the forecast's path (`pathCrossing`),
- * ./meeting-words.ts meetingWords: exact on the first mission (a hit, "✓ Mars will be there" and the
- * stars, else by how many days the target misses the probe there, ./orbit-crossing.ts targetLag),
- * coarse from the second on, from the flight's real closest approach ("Mars will be close", "a
- * little behind", "far ahead": ./meeting-words.ts forecastWords).
+ * ./meeting-words.ts: on an arrival "✓ Mars will be there" and the stars on every mission, as the
+ * flight will say (while time runs, `staleWords` instead: the forecast is of a moment gone); on a
+ * miss, exact on the first mission (by how many days the target misses the probe there,
+ * ./orbit-crossing.ts targetLag), coarse from the second on, from the flight's real closest
+ * approach ("Venus will be close", "a little behind", "far ahead": forecastWords).
  */
 function meetingVerdict(m: Mission, i: number): [string, string] {
-  if (missionIndex > 0) return forecastWords(m.target, forecast, m.zone, crossingTarget, aimDepth());
+  if (forecast.outcome === 'arrived' && !forecastIsNow()) return staleWords(m.target);
+  if (missionIndex > 0)
+    return forecastWords(m.target, forecast, m.zone, crossingTarget, starText(skillStars(missionIndex, m, aim.speed, aimDepth(), 0)));
   const lag = targetLag(forecast, i, crossingTarget, sunMu());
   const arrived = forecast.outcome === 'arrived';
   return meetingWords(m.target, lag, arrived, starText(starsFor(m, aim.speed)), missWords(forecast.closest, m.zone));
@@ -2645,7 +2679,9 @@ function updateStatus(force = false): void {
     if (flight.state === 'arrived') {
       const s = skillStars(missionIndex, m, flight.aim.speed + flight.fuelUsed, launchRings, flight.burns);
       const why =
-        missionIndex > 0 && s === 2 && starsFor(m, flight.aim.speed + flight.fuelUsed) === 3 ? ', launched on “close” with no burn' : '';
+        missionIndex > 0 && s === 2 && starsFor(m, flight.aim.speed + flight.fuelUsed) === 3
+          ? ', a centred launch with no burn earns ★★★'
+          : '';
       line = `✓ Arrived at ${m.target} after ${Math.round(flight.elapsed)} days! ${starText(s)} (${flight.aim.speed.toFixed(1)} km/s launch${burns}; 3 stars up to ${m.stars3} km/s in all${why})`;
       if (best.every((b) => b > 0)) line += ` · All missions flown: ${total} of ${3 * MISSIONS.length} stars`;
       cls = 'won';
@@ -2664,6 +2700,7 @@ function updateStatus(force = false): void {
   const rate = shell.paused ? 0 : shownRate(world.time, currentRate());
   const stars = `Stars ${total} / ${3 * MISSIONS.length}`;
   const atTheWindow = phase === 'aim' && Math.abs(world.time - atWindow) < 1;
+  const stoppedShort = phase === 'aim' && !atTheWindow && Math.abs(world.time - waitStoppedAt) < 1e-9 ? windowWords(m) : '';
   const clock = shell.paused
     ? atTheWindow
       ? `launch window for ${m.target}: aim ahead of it (paused)`
@@ -2672,10 +2709,12 @@ function updateStatus(force = false): void {
       ? phase === 'aim'
         ? atTheWindow
           ? `launch window for ${m.target}: aim ahead of it`
-          : // The first mission's lesson launches now; from the second on the window is the first step.
-            missionIndex === 0
-            ? 'time waits while you aim'
-            : `time waits: tap ${named('W', 'Wait')} for the next launch window`
+          : stoppedShort !== ''
+            ? stoppedShort
+            : // The first mission's lesson launches now; from the second on the window is the first step.
+              missionIndex === 0
+              ? 'time waits while you aim'
+              : `time waits: tap ${named('W', 'Wait')} for the next launch window`
         : 'time stopped'
       : `${rate < 10 ? rate.toFixed(1) : Math.round(rate)} days a second${wait.mode === 'off' ? '' : windowNearness < NEAR_WINDOW_DAYS ? ` (near ${m.target}’s window)` : wait.mode === 'run' ? ` (to ${m.target}’s launch window)` : ' (waiting)'}`;
   const dateLine = `${date} · ${clock} · ${stars}`;
@@ -2868,7 +2907,7 @@ function showCard(f: Flight): void {
       small(
         r.stars < 3
           ? spent <= m.stars3 + 1e-9
-            ? '★★★ also wants the launch made on “close” (centred on the ring) and no burn: aim again.'
+            ? '★★★ also wants a launch centred on the ring (the line before it reads ★★★) and no burn: aim again.'
             : `★★★ needs ${m.stars3} km/s or less in all: hold Wait for a cheaper moment, then aim again.`
           : 'Fewer km/s or a quicker flight scores more: a better moment may be cheaper.',
       ),

@@ -1,35 +1,33 @@
 /**
  * The solar system's verdict on a launch's meeting with the target before the mission's first failed
  * try (the page's reading line: "… is at Mars’s orbit on day 222 going out. <verdict>"), DOM-free so
- * Node tests check its wording. On the first mission (the lesson) it is exact (`meetingWords`): "✓
- * Mars will be there" or by how many days Mars misses the probe. From the second mission on it is
- * coarse (`coarseWords`), in bands of how centred the aim is, which the player must still judge on
- * the map ("Mars will be close": three-star centred; "a little behind", "far ahead"), with no ✓
- * and in one colour:
- * exact, every mission became "press ↑ until green, hold Wait until ✓". The exact verdict (the ring
- * at arrival) comes back after a failed try.
+ * Node tests check its wording. A launch whose forecast (the flight flown ahead with the flight's own
+ * physics and arrival ring, ./forecast.ts) arrives reads "✓ Mars will be there" and its stars on
+ * every mission, as the flight's own verdict does once launched. A miss on the first mission (the
+ * lesson) says by how many days the target misses the probe (`meetingWords`); from the second on it
+ * is coarse (`coarseWords`), in bands of the miss the player must still judge on the map ("Venus
+ * will be close", "a little behind", "far ahead"), no days and one colour. A ✓ is for a launch now
+ * only: while time runs, the forecast shown is of a moment already gone (`staleWords`).
  */
 
-import { STAR_RINGS } from './aim-depth';
 import type { Forecast } from './forecast';
 import { closestSide } from './orbit-crossing';
 
 /**
- * At most this many arrival rings the target is "close": the aim is centred as three stars want
- * (./aim-depth.ts STAR_RINGS: its path, flown on past the ring's edge, comes within half a ring of
- * the target's centre). A band of 1.2 rings read "close" for every launch from 2.3 to 3.1 km/s to
- * Venus, all of which arrived, so the word told nothing; now "a little" also covers arrivals that
- * only graze the ring (two stars at most). scripts/solar-system-stars.mjs plays it.
+ * A miss whose closest approach is at most this many arrival rings (the ring's radius) from the
+ * target's centre is "close": a near miss, a few presses off. "Close" read an arrival before (a
+ * centred one) and never said ✓, while the flight launched on it said "✓ arrives": the line before
+ * the launch and the flight's disagreed.
  */
-export const CLOSE_RINGS = STAR_RINGS;
+export const CLOSE_RINGS = 2;
 /** Beyond this many rings it is "far" behind or ahead; between CLOSE_RINGS and it, "a little". */
 export const FAR_RINGS = 5;
 
 /**
- * The coarse verdict from the second mission on, and its class ('edge': one colour, no ✓): how near
- * the aim comes to the target, in bands of `rings` (its closest approach over the zone's radius,
- * >= 0), and on which side the target is then, `side` (+1: still to come, "behind"; -1: gone by,
- * "ahead"; ./orbit-crossing.ts closestSide). @throws RangeError on a negative or NaN `rings`.
+ * The coarse verdict on a miss from the second mission on, and its class ('edge': one colour, no
+ * ✓): how near the aim comes to the target, in bands of `rings` (its closest approach over the
+ * zone's radius, >= 0), and on which side the target is then, `side` (+1: still to come, "behind";
+ * -1: gone by, "ahead"; ./orbit-crossing.ts closestSide). @throws RangeError on a negative or NaN `rings`.
  */
 export function coarseWords(target: string, rings: number, side: number): [string, string] {
   if (!(rings >= 0)) throw new RangeError(`coarseWords: rings must be >= 0, got ${rings}`);
@@ -38,17 +36,27 @@ export function coarseWords(target: string, rings: number, side: number): [strin
 }
 
 /**
- * The coarse verdict on the launch `forecast` is of (the page's forecast: the flight flown ahead with
- * the flight's own physics, ./forecast.ts): `coarseWords` of its closest approach to the target over
- * `zone` (the arrival ring's radius, AU > 0) and the target's side then (`closestSide`, `target` its
- * heliocentric state now). An arrival's forecast stops at the ring's edge, so for one `depth` (the
- * aim's ./aim-depth.ts aimRings, when given) says how centred it is instead.
+ * The verdict from the second mission on of the launch `forecast` is of (the page's forecast: the
+ * flight flown ahead with the flight's own physics, ./forecast.ts): on an arrival "✓ Venus will be
+ * there" and `stars` (the stars the launch earns, as text), the flight's own rule; else
+ * `coarseWords` of its closest approach to the target over `zone` (the arrival ring's radius, AU >
+ * 0) and the target's side then (`closestSide`, `target` its heliocentric state now).
  * @throws RangeError when zone is not > 0.
  */
-export function forecastWords(name: string, forecast: Forecast, zone: number, target: ArrayLike<number>, depth?: number): [string, string] {
+export function forecastWords(name: string, forecast: Forecast, zone: number, target: ArrayLike<number>, stars = ''): [string, string] {
   if (!(zone > 0)) throw new RangeError(`forecastWords: zone must be > 0, got ${zone}`);
-  const rings = forecast.outcome === 'arrived' && depth !== undefined ? depth : forecast.closest / zone;
-  return coarseWords(name, rings, closestSide(forecast, target));
+  if (forecast.outcome === 'arrived') return [`✓ ${name} will be there${stars === '' ? '' : ` · ${stars}`}`, 'ok'];
+  return coarseWords(name, forecast.closest / zone, closestSide(forecast, target));
+}
+
+/**
+ * The words for a launch whose forecast arrives but is not of the launch made now: time runs, and
+ * the forecast shown was worked out for a moment already gone (at 15 days a second it lagged 12
+ * days, and a ✓ shown then missed by 0.18 AU). No ✓: the player stops time (lets go of Wait, taps
+ * Stop) and the forecast of the launch then says ✓ or not. `target` the target's name.
+ */
+export function staleWords(target: string): [string, string] {
+  return [`${target} about there: stop time to check`, 'edge'];
 }
 
 /**

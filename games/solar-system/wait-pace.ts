@@ -5,7 +5,10 @@
  * across the months between launch windows, slows near one and stops at it for WINDOW_PAUSE_S
  * whatever the aim (the player is waiting for a window: let go there, or hold on past it); a tap
  * runs it on at the same pace to the next window and stops there (a phone's finger taps; at 10 days
- * a tap a window took about 170 of them), or stops a run under way (`waitTick`).
+ * a tap a window took about 170 of them), or stops a run under way (`waitTick`). A hold let go far
+ * from a window, with the aim far from arriving, runs on to the window as a tap does
+ * (`releaseRunsOn`): held 4 s from 2012-01-01 on Mars it stopped at 2013-07-22, 181 days short of
+ * the window, where no launch arrives.
  *
  * Units: days of world time, days per real second.
  */
@@ -108,7 +111,8 @@ export function nextLaunchWindow(earth: ArrayLike<number>, target: ArrayLike<num
  * 'run' (a tap's run to the next launch window); `waited` days run since it began (the ramp);
  * `pause` real seconds still to stand at a window; `rate` its pace at the last tick, days per real
  * second (0 standing); `lastStop` the world day it last stopped at a window (NaN for none: a window
- * there is not stopped at twice); `stopped` whether the last tick stopped at one (a chime).
+ * there is not stopped at twice); `stopped` whether the last tick stopped at one (a chime);
+ * `lastNext` the days to the next window at the last tick (NaN before the first of a Wait).
  */
 export interface WaitState {
   mode: 'off' | 'held' | 'run';
@@ -117,11 +121,20 @@ export interface WaitState {
   rate: number;
   lastStop: number;
   stopped: boolean;
+  lastNext: number;
 }
 
 /** A Wait that is off. */
 export function createWaitState(): WaitState {
-  return { mode: 'off', waited: 0, pause: 0, rate: 0, lastStop: Number.NaN, stopped: false };
+  return { mode: 'off', waited: 0, pause: 0, rate: 0, lastStop: Number.NaN, stopped: false, lastNext: Number.NaN };
+}
+
+/** Stops a Wait at a window on world day `at`: a held one stands there WINDOW_PAUSE_S, a run ends. */
+function standAt(s: WaitState, at: number): void {
+  s.lastStop = at;
+  s.stopped = true;
+  if (s.mode === 'held') s.pause = WINDOW_PAUSE_S;
+  else s.mode = 'off';
 }
 
 /**
@@ -145,6 +158,18 @@ export function waitTick(s: WaitState, tick: number, day: number, window: Launch
   // is the window now: kept as stopped at, for the ticks after too), is behind: the next is a
   // synodic period on.
   let next = window.next;
+  if (s.waited === 0) s.lastNext = Number.NaN;
+  // The window went by between two ticks: the estimate of it (the planets' places) falls faster
+  // than the clock near Mars's window (1.26 days a day), so a tick that ran less than the days left
+  // could find it just behind, a whole period off, and a tap's run went on to the window after.
+  // It stops here, a step past it.
+  const passed = s.lastNext < 2 && next > window.period / 2 && !(Math.abs(day - s.lastStop) < 2);
+  s.lastNext = next;
+  if (passed) {
+    s.rate = 0;
+    standAt(s, day);
+    return 0;
+  }
   if (s.waited === 0 && next < 2) s.lastStop = day + next;
   if (Math.abs(day + next - s.lastStop) < 2) next += window.period;
   // A tap's run slows only for the window ahead, where it stops (not for one just gone by), and not
@@ -155,11 +180,22 @@ export function waitTick(s: WaitState, tick: number, day: number, window: Launch
   let days = s.rate * tick;
   if (days >= next) {
     days = next;
-    s.lastStop = day + next;
-    s.stopped = true;
-    if (s.mode === 'held') s.pause = WINDOW_PAUSE_S;
-    else s.mode = 'off';
+    standAt(s, day + next);
   }
   s.waited += days;
   return days;
+}
+
+/**
+ * Whether letting go of a held Wait runs time on to the next launch window, as a tap's run does
+ * (else it stops where it is let go): when it is not standing at a window (`s.pause` 0), the nearest
+ * window is NEAR_WINDOW_DAYS or more away (`fromWindow`, days, either side) and the launch as aimed
+ * misses by AIM_NEAR_RINGS or more (`aimMiss`, heldWaitRate's): no launch arrives there, so a stop
+ * there only looked like a window. Near a window, or near an arriving aim, the player lets go to
+ * launch then. @throws RangeError on a negative or NaN fromWindow or aimMiss.
+ */
+export function releaseRunsOn(s: WaitState, fromWindow: number, aimMiss: number): boolean {
+  if (!(fromWindow >= 0)) throw new RangeError(`releaseRunsOn: fromWindow must be >= 0, got ${fromWindow}`);
+  if (!(aimMiss >= 0)) throw new RangeError(`releaseRunsOn: aimMiss must be >= 0, got ${aimMiss}`);
+  return s.mode === 'held' && s.pause === 0 && fromWindow >= NEAR_WINDOW_DAYS && aimMiss >= AIM_NEAR_RINGS;
 }

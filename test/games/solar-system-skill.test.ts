@@ -1,9 +1,8 @@
 /**
  * Three stars from the solar system's second mission want a centred launch (games/solar-system/
- * aim-depth.ts skillStars, aimRings), and the coarse words' "close" is that band
- * (./meeting-words.ts forecastWords): before, at Venus's launch window every speed from 2.3 to
- * 2.9 km/s that arrived read "close" and earned three stars, so the words told nothing and any
- * launch won.
+ * aim-depth.ts skillStars, aimRings), and the line before the launch names the stars an arrival
+ * earns (./meeting-words.ts forecastWords): at Venus's launch window every speed from 2.3 to 2.9
+ * km/s arrives, and the speed alone gave each three stars, so any launch won.
  */
 
 import { createPhysicsWorld, slotOf, step } from '@bitphysics/physics';
@@ -27,7 +26,7 @@ describe('skill stars', () => {
     expect(() => skillStars(1, venus, 2, Number.NaN, 0)).toThrow(/rings/);
   });
 
-  test('Venus at its launch window, speeds 2.3 to 3.1 km/s: "close" only where three stars are, and not every arrival', () => {
+  test('Venus at its launch window, speeds 2.3 to 3.1 km/s: every arrival reads ✓ with the stars it earns, three only where centred', () => {
     const options = { stepHours: 1, integrator: 'rk4' as const, date: '2012-01-01T00:00:00Z' };
     const world = createPhysicsWorld(solarSystem.worldOptions(options));
     const handles = solarSystem.build(world, options);
@@ -41,32 +40,25 @@ describe('skill stars', () => {
     const target = [...heliocentricState(world, handles, handles.bodies.Venus)];
     let arrived = 0,
       oldThree = 0,
-      three = 0,
-      close = 0;
+      three = 0;
     for (let tenths = 23; tenths <= 31; tenths++) {
       const aim = { angle: 180, speed: tenths / 10 };
       const f = forecastLaunch(world, handles, m, aim, 1 / 24);
       const rings = aimRings(world, handles, m, aim);
-      const [words] = forecastWords('Venus', f, m.zone, target, rings);
+      const s = skillStars(1, m, aim.speed, rings, 0);
+      const stars = '★'.repeat(s);
+      const [words] = forecastWords('Venus', f, m.zone, target, stars);
       const what = `${aim.speed} km/s: ${words}, ${f.outcome}, aim ${rings.toFixed(2)} rings`;
-      const isClose = words === 'Venus will be close';
-      if (isClose) close++;
-      if (f.outcome !== 'arrived') {
-        expect(isClose, what).toBe(false);
-        continue;
-      }
+      // The ✓ is the forecast's arrival (the flight's rule), and it names the stars the launch earns.
+      expect(words.startsWith('✓'), what).toBe(f.outcome === 'arrived');
+      if (f.outcome !== 'arrived') continue;
+      expect(words, what).toBe(`✓ Venus will be there · ${stars}`);
       arrived++;
       if (starsFor(m, aim.speed) === 3) oldThree++;
-      const s = skillStars(1, m, aim.speed, rings, 0);
       if (s === 3) three++;
-      // "Close" and a cheap launch: three stars; the words never promise more than the launch earns.
-      if (isClose && aim.speed <= m.stars3) expect(s, what).toBe(3);
-      if (!isClose) expect(s, what).toBeLessThan(3);
     }
-    // Before: every arrival read "close" and each cheap one earned three stars. Now the words split
-    // the arrivals (some "a little"), and fewer of the sweep's launches earn three stars.
+    // A cheap arrival earns three stars only when centred: fewer than the speed alone would give.
     expect(arrived).toBeGreaterThan(2);
-    expect(close).toBeLessThan(arrived);
     expect(three).toBeLessThan(oldThree);
   });
 

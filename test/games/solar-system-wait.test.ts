@@ -4,7 +4,7 @@
  * stands at every launch window whatever the aim, and a tap runs to the next window (on a phone, 10
  * days a tap took about 170 taps to a window).
  */
-import { createPhysicsWorld, slotOf } from '@bitphysics/physics';
+import { createPhysicsWorld, slotOf, step } from '@bitphysics/physics';
 import { solarSystem } from '@bitphysics/projects';
 import { describe, expect, test } from 'vitest';
 import { tutorialAim } from '../../games/solar-system/advice';
@@ -17,6 +17,7 @@ import {
   NEAR_WINDOW_DAYS,
   NEAR_WINDOW_RATE,
   nextLaunchWindow,
+  releaseRunsOn,
   WAIT_MAX_GAIN,
   WAIT_RAMP,
   WAIT_RATE,
@@ -204,5 +205,76 @@ describe('waitTick: a held Wait stands at every launch window whatever the aim; 
     s.waited = 0;
     waitTick(s, 1 / 60, from, windowAt(from), 0, 0);
     expect(s.rate).toBe(AIM_NEAR_RATE);
+  });
+});
+
+describe('a held Wait let go far from a window runs on to it', () => {
+  test('Mars from 2012-01-01, held 4 s then let go: it runs on to the window (it stopped at 2013-07-22, no window)', () => {
+    // The page's Wait on a real world (a day's step here: the window's estimate barely changes with
+    // the step; the page steps hours), 60 ticks a second: held for 4 s, then let go with the aim far
+    // off (aimMiss Infinity, as the lesson's starting aim).
+    const options = { stepHours: 24, integrator: 'rk4' as const, date: '2012-01-01T00:00:00Z' };
+    const world = createPhysicsWorld(solarSystem.worldOptions(options));
+    const handles = solarSystem.build(world, options);
+    const mu = world.laws.gravitationalConstant * world.components.Mass.value[slotOf(handles.bodies.Sun)]!;
+    const w = { next: 0, period: 0 };
+    const windowNow = () =>
+      nextLaunchWindow(
+        [...heliocentricState(world, handles, handles.bodies.Earth)],
+        heliocentricState(world, handles, handles.bodies.Mars),
+        mu,
+        w,
+      );
+    const s = createWaitState();
+    s.mode = 'held';
+    let carry = 0;
+    const tick = () => {
+      carry += waitTick(s, 1 / 60, world.time, windowNow(), 0);
+      for (; carry >= 1; carry--) step(world);
+    };
+    for (let k = 0; k < 4 * 60; k++) tick();
+    const date = (t: number) => new Date(handles.epoch + t * 86_400_000).toISOString().slice(0, 10);
+    const letGo = world.time;
+    windowNow();
+    const near = Math.min(w.next, w.period - w.next);
+    // Let go over 100 days from the window: stopping there left the player at no window.
+    expect(near, date(letGo)).toBeGreaterThan(100);
+    expect(releaseRunsOn(s, near, Number.POSITIVE_INFINITY)).toBe(true);
+    s.mode = 'run';
+    for (let k = 0; k < 60 * 60 && s.mode === 'run'; k++) tick();
+    // It stops at the window (within a day's step: the world steps whole days here).
+    expect(s.stopped, date(world.time)).toBe(true);
+    windowNow();
+    expect(Math.min(w.next, w.period - w.next), date(world.time)).toBeLessThan(1.5);
+    expect(date(world.time) > '2014-01-01' && date(world.time) < '2014-02-28', date(world.time)).toBe(true);
+    // Near a window, near an arriving aim, or standing at a window, a let-go stops there.
+    const held = { ...createWaitState(), mode: 'held' as const };
+    expect(releaseRunsOn(held, NEAR_WINDOW_DAYS - 1, Number.POSITIVE_INFINITY)).toBe(false);
+    expect(releaseRunsOn(held, 300, AIM_NEAR_RINGS - 0.1)).toBe(false);
+    expect(releaseRunsOn({ ...held, pause: 0.5 }, 300, Number.POSITIVE_INFINITY)).toBe(false);
+    expect(releaseRunsOn({ ...held, mode: 'off' }, 300, Number.POSITIVE_INFINITY)).toBe(false);
+    expect(() => releaseRunsOn(held, Number.NaN, 1)).toThrow(/fromWindow/);
+  });
+
+  test('a run stops at a window its estimate passes between two ticks (the estimate falls faster than the clock)', () => {
+    // Near Mars's window the estimate falls 1.26 days a day of world time; here 1.3, whole-hour
+    // world steps as the page's (the world runs the days a tick asks, in steps). Several phases of
+    // the step against the window: each run stops within a step of it, none runs on a period.
+    const period = 780;
+    for (const start of [0, 0.1, 0.2, 0.3, 0.4]) {
+      const s = createWaitState();
+      s.mode = 'run';
+      let day = start,
+        carry = 0;
+      const est = (d: number) => ({ next: (((100 - 1.3 * d) % period) + period) % period, period });
+      for (let k = 0; k < 3000 && s.mode === 'run'; k++) {
+        carry += waitTick(s, 1 / 60, day, est(day), 0);
+        const n = Math.floor(carry * 24 + 1e-9);
+        day += n / 24;
+        carry -= n / 24;
+      }
+      expect(s.mode, `from ${start}`).toBe('off');
+      expect(Math.abs(day - 100 / 1.3), `from ${start}: ${day}`).toBeLessThan(1 / 24 + 0.3);
+    }
   });
 });
