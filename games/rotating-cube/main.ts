@@ -941,7 +941,9 @@ let blockedSaid: '' | 'face' | 'slide' = '';
  * the pad wants, or the wanted face slid on instead of rolled on.
  */
 function sayBlocked(): void {
-  const why = params.mode === 'room' ? pads.blocked : '';
+  // The wrong face is said only once the cube has settled on the pad with it (a resting step between two
+  // rolls or in a landing's bounce read as a false alarm); a slide onto a pad is said as it rests.
+  const why = params.mode !== 'room' ? '' : pads.blocked === 'slide' ? 'slide' : pads.settledBlocked;
   if (why === blockedSaid) return;
   blockedSaid = why;
   const want = FACE_NAMES[layout.faces[pads.pad] ?? -1];

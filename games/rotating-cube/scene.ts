@@ -889,6 +889,8 @@ export class PadChallenge {
    * counted, or it does not rest on the pad).
    */
   blocked: '' | 'face' | 'slide' = '';
+  /** World time `blocked` last took a reason after none or another, s, or -1 while it is ''. */
+  private blockedSince = -1;
   /** The face on top at the last `update` (index into FACES), or -1 before the first. */
   private lastTop = -1;
   /** The round's clock, s: world time since the start spent with the cube still, up to the round's end. */
@@ -913,6 +915,7 @@ export class PadChallenge {
     this.rolled = false;
     this.over = false;
     this.blocked = '';
+    this.blockedSince = -1;
     this.lastTop = -1;
     this.clock = 0;
     this.lastTime = -1;
@@ -958,11 +961,26 @@ export class PadChallenge {
     return this.clock;
   }
   /**
+   * `blocked` once it has held, the same reason at every `update`, for BLOCKED_SETTLE_TIME s of world
+   * time: the cube has come to rest on the lit pad and stays there (else ''). A cube only passing
+   * through rest there, as it does for a step between two rolls or in a landing's bounce, gives ''.
+   */
+  get settledBlocked(): '' | 'face' | 'slide' {
+    return this.blockedSince >= 0 && this.lastTime - this.blockedSince >= BLOCKED_SETTLE_TIME - 1e-9 ? this.blocked : '';
+  }
+  /**
    * Checks `body` against the lit pad after a step of `world` and lights the next one when it rests
    * there, its centre within the pad's half edge plus PAD_GRACE (a pad reached before `start` starts
    * the clock then); sets `over` and `blocked`. @returns whether a pad was reached by this call.
    */
   update(world: PhysicsWorld, body: number): boolean {
+    const was = this.blocked;
+    const reached = this.check(world, body);
+    if (this.blocked !== was) this.blockedSince = this.blocked ? world.time : -1;
+    return reached;
+  }
+  /** The work of `update`, which also keeps `blockedSince` (when `blocked` last changed). */
+  private check(world: PhysicsWorld, body: number): boolean {
     const { pads, faces, halves } = this.layout;
     this.blocked = '';
     const dt = this.lastTime >= 0 ? Math.max(0, world.time - this.lastTime) : 0;
@@ -1021,6 +1039,16 @@ export class PadChallenge {
     if (rest >= 0 && (par < 0 || this.padMoves === 0 || this.padMoves + rest < par)) this.pars[this.pad] = this.padMoves + rest;
   }
 }
+
+/**
+ * How long, s, a cube resting on the lit pad must stay there, not counted for the same reason, before
+ * the page says why (PadChallenge `settledBlocked`). The pad counts a landing the moment the cube is
+ * still (`cubeStill`), but a roll's landing is still for a step or two in its bounce, and a queued
+ * roll starts from there: with the wrong face on top that step is no reason to cry wrong face. At 60
+ * steps a second a landing's bounce breaks its rest for 4 steps, 0.07 s; 0.25 s is well past that
+ * and short enough to read as at once.
+ */
+export const BLOCKED_SETTLE_TIME = 0.25;
 
 /** The fewest moves left with the cube slid onto the lit pad, the wanted face on top: a roll off and the roll back on. */
 export const SLID_ON_MOVES = 2;
