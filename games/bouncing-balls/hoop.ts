@@ -517,12 +517,22 @@ export const ROOM_OVER_RIM = 3.5;
 /**
  * How far under the rim a pull just past nothing takes the ball straight up in the tall box, m
  * (slingRoom): the pull's length is spent on throws that rise to the hoop, the apex of a throw
- * straight up gaining the same per px of pull from 1 m under the rim to ROOM_OVER_RIM over it (some
- * 3 cm a px of a finger's 138 px pull). A low start's least power for a clean basket (the share of
- * the full pull) is then a median 50 % (with the floor at half the top speed, 71 %; the old 20 m/s
- * curve, 60 % of its speed).
+ * straight up rising from 1 m under the rim to ROOM_OVER_RIM over it (more per px over the short
+ * pulls, less towards the full pull: ROOM_PULL_CURVE). With the apex gaining the same per px, a low
+ * start's least power for a clean basket (the share of the full pull) was a median 50 % (with the
+ * floor at half the top speed, 71 %; the old 20 m/s curve, 60 % of its speed).
  */
 export const ROOM_UNDER_RIM = 1;
+
+/**
+ * How the height a tall box's throw reaches (the square of its speed, between room.low and room.top)
+ * grows with the pull's share of the full pull (slingSpeed): as the share to this power. Under 1, the
+ * short pulls (throws that fall short of the rim) take fewer px and the strong ones, where a low
+ * start scores (from some half the height up), more: a phone's 138 px full pull spent 69 px on the
+ * upper half of the height, now 95 px (a stranger found 80 px at 68 % and 140 px at 100 % too
+ * sensitive for a thumb). The full pull still throws at room.top.
+ */
+export const ROOM_PULL_CURVE = 0.6;
 
 /**
  * The slingshot's speeds for a throw from height `y`, m, at a hoop whose rim is at `rimY`, m, under
@@ -548,14 +558,16 @@ export function slingRoom(y: number, rimY: number, g: number): SlingRoom {
  * MAX_THROW_SPEED. A speed linear to the full pull made the height grow with the pull's square: its
  * last px swung a throw from mid-box to the ceiling (twice the height per px of the average).
  * With a `room` (the tall box's, slingRoom): from room.low just past no pull to room.top at the full
- * pull, the square of the speed (the height) growing evenly all the way; 0 for no pull.
+ * pull, the square of the speed (the height) growing as the pull's share to the power
+ * ROOM_PULL_CURVE (fast over the short pulls, slower towards the full pull, where the baskets are);
+ * 0 for no pull.
  * @throws RangeError unless length is finite and >= 0 and fullPull is finite and > 0.
  */
 export function slingSpeed(length: number, fullPull: number, room?: SlingRoom): number {
   if (!(length >= 0 && Number.isFinite(length))) throw new RangeError(`slingSpeed: length must be finite and >= 0 px, got ${length}`);
   if (!(fullPull > 0 && Number.isFinite(fullPull))) throw new RangeError(`slingSpeed: fullPull must be finite and > 0 px, got ${fullPull}`);
   const p = Math.min(1, length / fullPull);
-  if (room) return length === 0 ? 0 : Math.sqrt(room.low * room.low + (room.top * room.top - room.low * room.low) * p);
+  if (room) return length === 0 ? 0 : Math.sqrt(room.low * room.low + (room.top * room.top - room.low * room.low) * p ** ROOM_PULL_CURVE);
   if (p <= SLING_KNEE) return KNEE_SLOPE * p;
   return Math.min(MAX_THROW_SPEED, Math.sqrt(KNEE_SPEED * KNEE_SPEED + 2 * KNEE_SPEED * KNEE_SLOPE * (p - SLING_KNEE)));
 }
@@ -569,7 +581,10 @@ export function slingPull(speed: number, fullPull: number, room?: SlingRoom): nu
   const top = room ? room.top : MAX_THROW_SPEED;
   if (!(speed >= 0 && speed <= top)) throw new RangeError(`slingPull: speed must be in [0, ${top}] m/s, got ${speed}`);
   if (!(fullPull > 0 && Number.isFinite(fullPull))) throw new RangeError(`slingPull: fullPull must be finite and > 0 px, got ${fullPull}`);
-  if (room) return (fullPull * Math.max(0, speed * speed - room.low * room.low)) / (room.top * room.top - room.low * room.low);
+  if (room)
+    return (
+      fullPull * (Math.max(0, speed * speed - room.low * room.low) / (room.top * room.top - room.low * room.low)) ** (1 / ROOM_PULL_CURVE)
+    );
   if (speed <= KNEE_SPEED) return (fullPull * speed) / KNEE_SLOPE;
   return fullPull * (SLING_KNEE + (speed * speed - KNEE_SPEED * KNEE_SPEED) / (2 * KNEE_SPEED * KNEE_SLOPE));
 }
@@ -593,8 +608,9 @@ export function slingVelocity(pullX: number, pullY: number, fullPull: number, ro
 
 /**
  * How far a finger's pull is drawn to a throw that scores, px of pull (assistPull): on a phone the
- * pull lengths that score span 17 px at the tightest starts (a 138 px full pull on the phone's curve,
- * slingRoom; scripts/bouncing-balls-reach.mjs --pull), little more than a thumb moves as it lets go.
+ * pull lengths that score span 27 px at the tightest starts (a 138 px full pull on the phone's curve,
+ * slingRoom, ROOM_PULL_CURVE; scripts/bouncing-balls-reach.mjs --pull), not much more than a thumb
+ * moves as it lets go.
  */
 export const PULL_ASSIST_PX = 14;
 

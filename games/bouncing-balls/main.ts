@@ -98,6 +98,7 @@ import {
 import { Graphics, Text } from 'pixi.js';
 import { assistAim } from './aim-assist';
 import { pageStorage, readBest, writeBest } from './best';
+import { FINGER_REACH_PX, fingerBall } from './finger-pick';
 import { FlickTracker, flickPull } from './flick';
 import {
   addHoop,
@@ -544,12 +545,13 @@ function someNeighbour(e: number, resting: boolean, test: (dx: number, dy: numbe
 const LIFT_CLEARANCE = 0.01;
 
 /**
- * Where ball `e` starts its throw, m: where it is unless it is buried (`buried`); then the lowest spot
+ * Where ball `e` starts its throw, m: where it is unless it is buried (`buried`) or `lift` (default: it
+ * is the ball a finger pressed on that has no free way up, fingerLift); then the lowest spot
  * straight above it that is clear of every other ball (by LIFT_CLEARANCE), of the ramps and the hoop,
  * and inside the box: on top of the heap over it. null when a buried ball has no such spot (the heap
  * reaches the box's top, or a ramp or the hoop lies over it): the press is refused.
  */
-function liftSpot(e: number): [number, number] | null {
+function liftSpot(e: number, lift = e === fingerLift): [number, number] | null {
   const c = shell.world.components,
     P = c.Position,
     R = c.Ball.radius,
@@ -557,7 +559,7 @@ function liftSpot(e: number): [number, number] | null {
   const x = P.x[s]!,
     y = P.y[s]!,
     r = R[s]!;
-  if (!buried(e)) return [x, y];
+  if (!lift && !buried(e)) return [x, y];
   const { box, segments } = layoutOf(TALL);
   const walls = [
     ...segments.map(([ax, ay, bx, by]) => [ax, ay, bx, by, SEGMENT_RADIUS] as const),
@@ -1108,6 +1110,7 @@ const game = await startPixiGame({
   app: { background: 0x0b0f18 },
   beforeFrame: () => anchorCourt(),
   onFrame: (alpha, world) => {
+    rememberSpots();
     drawCourt();
     drawBasketballs(alpha, world);
     drawPointer();
@@ -1336,6 +1339,7 @@ function endAim(): void {
   if (canvas.hasPointerCapture(pointerId)) canvas.releasePointerCapture(pointerId);
   pointerId = -1;
   pressBall = 0;
+  fingerLift = 0;
   dragged = false;
   clearTimeout(holdTimer);
 }
@@ -1704,6 +1708,64 @@ let pressStand = false;
 /** When a tap on the stand was let go (performance.now() ms; its hint shows HOOP_TAP_SHOWN ms), or -Infinity. */
 let standTapAt = Number.NEGATIVE_INFINITY;
 
+/**
+ * What a press at (wx, wy), m (inside the box, pressInBox), throws: `onBall` the ball (0: a new
+ * basketball), `stand` whether it is under the box's floor and `floor` the new basketball's spot on
+ * the floor under it, `lift` the ball to lift over the heap for the throw (fingerLift; 0: none). A
+ * `finger`'s press takes the ball it is on, or was on as drawn a moment before, within a finger's
+ * reach (fingerUnder), and keeps it though it has no free way up (lifted then).
+ */
+function pressPick(wx: number, wy: number, finger: boolean): { stand: boolean; floor: [number, number]; onBall: number; lift: number } {
+  const { box } = layoutOf(TALL);
+  // Under the floor (the stand, room to pull back into): the press throws the top ball of the heap
+  // over it, or a new basketball from the floor there when the heap is empty.
+  const stand = wy < box.min[1];
+  const floor: [number, number] = [
+    Math.min(box.max[0] - PLAYER_RADIUS, Math.max(box.min[0] + PLAYER_RADIUS, wx)),
+    box.min[1] + PLAYER_RADIUS + START_CLEARANCE,
+  ];
+  // A ball with a neighbour over it would be "blocked": the free ball nearest the press is taken instead.
+  // A press just over or beside the heap (no ball under it) takes the free ball nearest it too, so a
+  // new basketball starts only in open space, clear of the heap (one there read as coming from nowhere).
+  const under = stand ? columnTop(wx, floor) : (finger ? fingerUnder(wx, wy) : ballUnder(wx, wy)) || overlapped(wx, wy);
+  // A finger's ball is the one it pressed on (the player's choice), lifted to the top of the heap over
+  // it (liftSpot) when it has no free way up, unless there is no room there.
+  if (finger && !stand && under !== 0 && !freeUp(under) && liftSpot(under, true) !== null)
+    return { stand, floor, onBall: under, lift: buried(under) ? 0 : under };
+  const onBall = under !== 0 || !stand ? pickFree(under, wx, wy, stand) : 0;
+  return { stand, floor, onBall, lift: 0 };
+}
+
+/**
+ * The ball a finger's press at (x, y), m, is on (fingerBall): against where the balls are and where
+ * they were drawn SEEN_FRAMES frames before, within the drag's reach of an edge or FINGER_REACH_PX of
+ * a centre; 0 for none.
+ */
+function fingerUnder(x: number, y: number): number {
+  const P = shell.world.components.Position,
+    R = shell.world.components.Ball.radius;
+  const now = handles.balls.map((id) => ({ id, x: P.x[slotOf(id)]!, y: P.y[slotOf(id)]!, r: R[slotOf(id)]! }));
+  const fingerReach = FINGER_REACH_PX / renderer.camera.toScreenLength(1);
+  return fingerBall(now, seenSpots[0] ?? new Map(), x, y, 0.6 * meanRadiusFor(params.count), fingerReach);
+}
+
+/** How many frames back fingerUnder also takes the balls where they were drawn: 6, a tenth of a second (a finger lands where the player saw the ball). */
+const SEEN_FRAMES = 6;
+/** The balls' centres, m, by id, as drawn in each of the last SEEN_FRAMES frames, oldest first (rememberSpots). */
+const seenSpots: Map<number, readonly [number, number]>[] = [];
+
+/** Keeps this frame's ball centres in seenSpots (dropping the oldest past SEEN_FRAMES). */
+function rememberSpots(): void {
+  const P = shell.world.components.Position;
+  const spots = new Map<number, readonly [number, number]>();
+  for (const e of handles.balls) spots.set(e, [P.x[slotOf(e)]!, P.y[slotOf(e)]!]);
+  seenSpots.push(spots);
+  while (seenSpots.length > SEEN_FRAMES) seenSpots.shift();
+}
+
+/** The ball a finger pressed on that has no free way up and is not buried (pressPick): its throw starts lifted over the heap (liftSpot), as a buried one's does. 0: none. */
+let fingerLift = 0;
+
 canvas.addEventListener('pointerdown', (event) => {
   // (On a small screen a press on the field also closes an open drawer: game-kit's page layout.)
   if (grabbing || event.button !== 0 || pointerId !== -1 || drag.joint !== 0) return;
@@ -1715,18 +1777,7 @@ canvas.addEventListener('pointerdown', (event) => {
   // A press on the frame beside or over the box is taken as one just inside it, so a press anywhere
   // on the play area starts an aim (one on the steel frame did nothing).
   const [wx, wy] = pressInBox(renderer.camera.toWorldX(px), renderer.camera.toWorldY(py), box.min, box.max);
-  // Under the floor (the stand, room to pull back into): the press throws the top ball of the heap
-  // over it, or a new basketball from the floor there when the heap is empty.
-  const stand = wy < box.min[1];
-  const floor: [number, number] = [
-    Math.min(box.max[0] - PLAYER_RADIUS, Math.max(box.min[0] + PLAYER_RADIUS, wx)),
-    box.min[1] + PLAYER_RADIUS + START_CLEARANCE,
-  ];
-  // A ball with a neighbour over it would be "blocked": the free ball nearest the press is taken instead.
-  // A press just over or beside the heap (no ball under it) takes the free ball nearest it too, so a
-  // new basketball starts only in open space, clear of the heap (one there read as coming from nowhere).
-  const under = stand ? columnTop(wx, floor) : ballUnder(wx, wy) || overlapped(wx, wy);
-  const onBall = under !== 0 || !stand ? pickFree(under, wx, wy, stand) : 0;
+  const { stand, floor, onBall, lift } = pressPick(wx, wy, event.pointerType === 'touch');
   const spot = onBall !== 0 ? null : startSpot(...(stand ? floor : ([wx, wy] as const)));
   // Where no ball can start (a ramp's far side) and nothing to pick up: the press does nothing, seen or heard.
   if (onBall === 0 && spot === null && !bodyUnder(wx, wy)) return;
@@ -1740,7 +1791,8 @@ canvas.addEventListener('pointerdown', (event) => {
   lastY = startY;
   dragged = false;
   pressBall = onBall;
-  pressPicked = onBall !== 0 && onBall !== ballUnder(wx, wy);
+  fingerLift = lift;
+  pressPicked = onBall !== 0 && onBall !== (event.pointerType === 'touch' ? fingerUnder(wx, wy) : ballUnder(wx, wy));
   boardSaid = false;
   slop = event.pointerType === 'touch' ? TOUCH_SLOP : CLICK_SLOP;
   pressFinger = event.pointerType === 'touch';
@@ -1818,6 +1870,14 @@ canvas.addEventListener('pointermove', (event) => {
  * slingshot-style; a pull taken back into the cancel zone (inCancelZone) does nothing. Only a throw counts as a shot (and the clock waits for the first basket).
  */
 function release(event: PointerEvent, cancelled: boolean): void {
+  const mine = event.pointerId === pointerId;
+  releasePress(event, cancelled);
+  // The press is over: a finger's ball not thrown is no longer to be lifted.
+  if (mine) fingerLift = 0;
+}
+
+/** The body of `release`. */
+function releasePress(event: PointerEvent, cancelled: boolean): void {
   if (event.pointerId !== pointerId) return;
   pointerId = -1;
   clearTimeout(holdTimer);
@@ -1963,6 +2023,7 @@ function throwBall(e: number, vx: number, vy: number): boolean {
   if (!handles.balls.includes(e)) throw new RangeError(`throwBall: ${e} is not a ball of the scene`);
   const from = liftSpot(e);
   if (from === null) return false;
+  if (e === fingerLift) fingerLift = 0;
   const c = shell.world.components,
     s = slotOf(e);
   if (from[0] !== c.Position.x[s] || from[1] !== c.Position.y[s]) setPosition(shell.world, e, from);
@@ -3595,6 +3656,11 @@ shell.expose({
   ballIds: (): number[] => handles.balls.slice(),
   /** Entity ids of the crates dropped with X, oldest first (a copy). */
   crateIds: (): number[] => crates.slice(),
+  /** The ball a press at (x, y), m, would throw now (0: a new basketball or nothing), a finger's when `finger`. */
+  pickAt: (x: number, y: number, finger = false): number => {
+    const { box } = layoutOf(TALL);
+    return pressPick(...pressInBox(x, y, box.min, box.max), finger).onBall;
+  },
   /** Ball positions, m, flat [x0, y0, x1, y1, ...] in `ballIds` order. */
   positions: (): number[] => {
     const P = shell.world.components.Position;
