@@ -602,109 +602,105 @@ describe('phone controls', () => {
     });
   });
 
-  describe('rotating cube, flip round, one page', () => {
-    // One page for these two, the game reset before each (a new flip round: no flip counted, the clock
-    // back to 20 s and waiting); neither needs the touch card or counts since the load.
-    const flip = sharedPage(() => h, 'rotating-cube', { ...PHONE, query: { mode: 'flip' } });
-
-    it("rotating cube: the flip round's goal and numbers fit the phone's width, spin up to two digits; the hint names the band", async () => {
-      // The numbers line is one line on a phone, cut with an ellipsis where it is wider than the screen:
-      // "… · spin 6.0 of …" hid the band and the ✗ (the band now goes in the hint).
-      const g = flip();
-      type Line = { text: string; over: number };
-      const lines = () =>
-        g.page.evaluate(() =>
-          ['goal', 'numbers', 'hint'].map((part) => {
-            const el = document.querySelector<HTMLElement>(`[data-hud="challenge"] [data-hud="${part}"]`)!;
-            return { text: el.textContent ?? '', over: el.scrollWidth - el.clientWidth };
-          }),
-        ) as Promise<Line[]>;
-      const first = await g.waitFor(() => document.querySelector('[data-hud="challenge"] [data-hud="numbers"]')?.textContent || null, null);
-      let shown = await lines();
-      expect(shown.map((l) => l.over)).toEqual([0, 0, 0]);
-      expect(first).toMatch(/^Flips 0\/10 · 20\.0 s · spin 6\.0 ✗$/);
-      expect(shown[2]!.text).toMatch(/hold Yaw ▶ .*8–12/);
-      // The round started (a Yaw ▶ press) and the spin scaled to 11.5 rad/s: two digits.
-      await hold(g.page, 'turn right', 200);
-      await g.page.evaluate(() => {
-        const game = window.game as unknown as {
-          body(): number;
-          world: { components: { AngularVelocity: Record<'x' | 'y' | 'z', Float64Array> } };
-        };
-        const W = game.world.components.AngularVelocity;
-        const w = Math.hypot(W.x[game.body()]!, W.y[game.body()]!, W.z[game.body()]!);
-        for (const k of ['x', 'y', 'z'] as const) W[k][game.body()] = (W[k][game.body()]! * 11.5) / w;
-      });
-      shown = await g
-        .waitFor(() => {
-          const el = document.querySelector('[data-hud="challenge"] [data-hud="numbers"]');
-          return /spin 1\d\.\d/.test(el?.textContent ?? '') || null;
-        }, null)
-        .then(lines);
-      expect(shown[1]!.text).toMatch(/^Flips \d+\/10 · \d+\.\d s · spin 1\d\.\d [✓✗]$/);
-      expect(shown.map((l) => l.over)).toEqual([0, 0, 0]);
-      expect(g.errors).toEqual([]);
+  it("rotating cube: the flip round's goal and numbers fit the phone's width, spin up to two digits; the hint names the band", async () => {
+    // The numbers line is one line on a phone, cut with an ellipsis where it is wider than the screen:
+    // "… · spin 6.0 of …" hid the band and the ✗ (the band now goes in the hint).
+    const g = await h.openGame('rotating-cube', { ...PHONE, query: { mode: 'flip' } });
+    type Line = { text: string; over: number };
+    const lines = () =>
+      g.page.evaluate(() =>
+        ['goal', 'numbers', 'hint'].map((part) => {
+          const el = document.querySelector<HTMLElement>(`[data-hud="challenge"] [data-hud="${part}"]`)!;
+          return { text: el.textContent ?? '', over: el.scrollWidth - el.clientWidth };
+        }),
+      ) as Promise<Line[]>;
+    const first = await g.waitFor(() => document.querySelector('[data-hud="challenge"] [data-hud="numbers"]')?.textContent || null, null);
+    let shown = await lines();
+    expect(shown.map((l) => l.over)).toEqual([0, 0, 0]);
+    expect(first).toMatch(/^Flips 0\/10 · 20\.0 s · spin 6\.0 ✗$/);
+    expect(shown[2]!.text).toMatch(/hold Yaw ▶ .*8–12/);
+    // The round started (a Yaw ▶ press) and the spin scaled to 11.5 rad/s: two digits.
+    await hold(g.page, 'turn right', 200);
+    await g.page.evaluate(() => {
+      const game = window.game as unknown as {
+        body(): number;
+        world: { components: { AngularVelocity: Record<'x' | 'y' | 'z', Float64Array> } };
+      };
+      const W = game.world.components.AngularVelocity;
+      const w = Math.hypot(W.x[game.body()]!, W.y[game.body()]!, W.z[game.body()]!);
+      for (const k of ['x', 'y', 'z'] as const) W[k][game.body()] = (W[k][game.body()]! * 11.5) / w;
     });
+    shown = await g
+      .waitFor(() => {
+        const el = document.querySelector('[data-hud="challenge"] [data-hud="numbers"]');
+        return /spin 1\d\.\d/.test(el?.textContent ?? '') || null;
+      }, null)
+      .then(lines);
+    expect(shown[1]!.text).toMatch(/^Flips \d+\/10 · \d+\.\d s · spin 1\d\.\d [✓✗]$/);
+    expect(shown.map((l) => l.over)).toEqual([0, 0, 0]);
+    expect(g.errors).toEqual([]);
+    await g.close();
+  });
 
-    it("rotating cube: the flip round's end card is a sheet at the stage's foot that leaves the box in sight", async () => {
-      const g = flip();
-      // The round run out (20 s of world time, stepped while paused so the box holds still), lost. The
-      // page's hooks come after the kit's.
-      await g.waitFor(() => typeof (window.game as unknown as { startClock?: unknown }).startClock === 'function', null);
-      await g.page.evaluate(() => {
-        const game = window.game as unknown as { startClock(): void; paused: boolean; step(): void };
-        game.startClock();
-        game.paused = true;
-        for (let i = 0; i < 1260; i++) game.step();
+  it("rotating cube: the flip round's end card is a sheet at the stage's foot that leaves the box in sight", async () => {
+    const g = await h.openGame('rotating-cube', { ...PHONE, query: { mode: 'flip' } });
+    // The round run out (20 s of world time, stepped while paused so the box holds still), lost. The
+    // page's hooks come after the kit's.
+    await g.waitFor(() => typeof (window.game as unknown as { startClock?: unknown }).startClock === 'function', null);
+    await g.page.evaluate(() => {
+      const game = window.game as unknown as { startClock(): void; paused: boolean; step(): void };
+      game.startClock();
+      game.paused = true;
+      for (let i = 0; i < 1260; i++) game.step();
+    });
+    const card = g.page.locator('[data-hud="win-banner"]');
+    await expect.poll(() => card.isVisible(), { timeout: 30_000 }).toBe(true);
+    const cardBox = (await card.boundingBox())!;
+    // The box's screen rectangle: the 8 corners of its mesh (the instanced box with vertex colours) projected.
+    const box = await g.page.evaluate(() => {
+      type V = { x: number; y: number; applyMatrix4(m: unknown): V; project(c: unknown): V };
+      type M = { multiplyMatrices(a: unknown, b: unknown): M };
+      const app = (
+        window.game as unknown as {
+          app: {
+            scene: { traverse(f: (o: unknown) => void): void };
+            camera: { position: { constructor: new (x: number, y: number, z: number) => V } };
+          };
+        }
+      ).app;
+      type Boxes = { matrixWorld: M & { constructor: new () => M }; getMatrixAt(i: number, m: M): void };
+      const meshes: Boxes[] = [];
+      app.scene.traverse((o) => {
+        const m = o as { isInstancedMesh?: boolean; geometry?: { type: string; attributes: { color?: unknown } } };
+        if (m.isInstancedMesh && m.geometry?.type === 'BoxGeometry' && m.geometry.attributes.color) meshes.push(o as Boxes);
       });
-      const card = g.page.locator('[data-hud="win-banner"]');
-      await expect.poll(() => card.isVisible(), { timeout: 30_000 }).toBe(true);
-      const cardBox = (await card.boundingBox())!;
-      // The box's screen rectangle: the 8 corners of its mesh (the instanced box with vertex colours) projected.
-      const box = await g.page.evaluate(() => {
-        type V = { x: number; y: number; applyMatrix4(m: unknown): V; project(c: unknown): V };
-        type M = { multiplyMatrices(a: unknown, b: unknown): M };
-        const app = (
-          window.game as unknown as {
-            app: {
-              scene: { traverse(f: (o: unknown) => void): void };
-              camera: { position: { constructor: new (x: number, y: number, z: number) => V } };
-            };
+      const found = meshes[0]!;
+      const instance = new found.matrixWorld.constructor();
+      found.getMatrixAt(0, instance);
+      const world = new found.matrixWorld.constructor().multiplyMatrices(found.matrixWorld, instance);
+      const r = document.querySelector('canvas')!.getBoundingClientRect();
+      const xs: number[] = [],
+        ys: number[] = [];
+      for (const cx of [-0.5, 0.5])
+        for (const cy of [-0.5, 0.5])
+          for (const cz of [-0.5, 0.5]) {
+            const v = new app.camera.position.constructor(cx, cy, cz).applyMatrix4(world).project(app.camera);
+            xs.push(r.left + ((v.x + 1) / 2) * r.width);
+            ys.push(r.top + ((1 - v.y) / 2) * r.height);
           }
-        ).app;
-        type Boxes = { matrixWorld: M & { constructor: new () => M }; getMatrixAt(i: number, m: M): void };
-        const meshes: Boxes[] = [];
-        app.scene.traverse((o) => {
-          const m = o as { isInstancedMesh?: boolean; geometry?: { type: string; attributes: { color?: unknown } } };
-          if (m.isInstancedMesh && m.geometry?.type === 'BoxGeometry' && m.geometry.attributes.color) meshes.push(o as Boxes);
-        });
-        const found = meshes[0]!;
-        const instance = new found.matrixWorld.constructor();
-        found.getMatrixAt(0, instance);
-        const world = new found.matrixWorld.constructor().multiplyMatrices(found.matrixWorld, instance);
-        const r = document.querySelector('canvas')!.getBoundingClientRect();
-        const xs: number[] = [],
-          ys: number[] = [];
-        for (const cx of [-0.5, 0.5])
-          for (const cy of [-0.5, 0.5])
-            for (const cz of [-0.5, 0.5]) {
-              const v = new app.camera.position.constructor(cx, cy, cz).applyMatrix4(world).project(app.camera);
-              xs.push(r.left + ((v.x + 1) / 2) * r.width);
-              ys.push(r.top + ((1 - v.y) / 2) * r.height);
-            }
-        return { left: Math.min(...xs), right: Math.max(...xs), top: Math.min(...ys), bottom: Math.max(...ys) };
-      });
-      // The box is on screen, and the card's rectangle does not meet its rectangle (in the middle of the
-      // stage the card covered it whole).
-      expect(box.bottom - box.top).toBeGreaterThan(20);
-      const apart =
-        cardBox.y >= box.bottom || cardBox.y + cardBox.height <= box.top || cardBox.x >= box.right || cardBox.x + cardBox.width <= box.left;
-      expect(apart, `card ${JSON.stringify(cardBox)}, box ${JSON.stringify(box)}`).toBe(true);
-      // Its buttons are in the screen, above the touch buttons' bar.
-      const retry = (await card.getByRole('button', { name: /try again/i }).boundingBox())!;
-      expect(retry.y + retry.height).toBeLessThanOrEqual(844);
-      expect(g.errors).toEqual([]);
+      return { left: Math.min(...xs), right: Math.max(...xs), top: Math.min(...ys), bottom: Math.max(...ys) };
     });
+    // The box is on screen, and the card's rectangle does not meet its rectangle (in the middle of the
+    // stage the card covered it whole).
+    expect(box.bottom - box.top).toBeGreaterThan(20);
+    const apart =
+      cardBox.y >= box.bottom || cardBox.y + cardBox.height <= box.top || cardBox.x >= box.right || cardBox.x + cardBox.width <= box.left;
+    expect(apart, `card ${JSON.stringify(cardBox)}, box ${JSON.stringify(box)}`).toBe(true);
+    // Its buttons are in the screen, above the touch buttons' bar.
+    const retry = (await card.getByRole('button', { name: /try again/i }).boundingBox())!;
+    expect(retry.y + retry.height).toBeLessThanOrEqual(844);
+    expect(g.errors).toEqual([]);
+    await g.close();
   });
 
   it('rotating cube: the pad goal is on screen; a plain tap on the cube picks the floor cell under it, a drag from it flicks it that way', async () => {
