@@ -251,14 +251,15 @@ describe('3D rigid-body games in headless Chromium', () => {
       home,
       30_000,
     );
-    // Back beside the mast (inside the site's framing), and the camera allowed to settle (it eases by
-    // the page's clock, in about 0.9 s).
+    // Back beside the mast (inside the site's framing), and the camera allowed to settle: it eases by
+    // its own clock, which goes with the world's time while the game runs (main.ts cameraNow), in
+    // about 0.9 s; 2 s of game time run as frames of 1/20 s (the wrecking-ball camera tests' pace).
     await hookTo(3, 0);
-    await g.page.waitForTimeout(2000);
+    await g.runFrames(40, { seconds: 1 / 20 });
     const widened = await target();
-    // Longer than the 2.5 s the ball once had to stay inside the site's framing for the camera to go
-    // back to it (moving every target on the screen between swings).
-    await g.page.waitForTimeout(5000);
+    // 5 s more of game time: longer than the 2.5 s the ball once had to stay inside the site's framing
+    // for the camera to go back to it (moving every target on the screen between swings).
+    await g.runFrames(100, { seconds: 1 / 20 });
     const later = await target();
     expect(Math.hypot(later[0]! - widened[0]!, later[1]! - widened[1]!, later[2]! - widened[2]!)).toBeLessThan(0.05);
     expect(Math.hypot(later[0]! - home[0]!, later[1]! - home[1]!, later[2]! - home[2]!)).toBeGreaterThan(0.5);
