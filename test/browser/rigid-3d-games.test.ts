@@ -149,7 +149,7 @@ describe('3D rigid-body games in headless Chromium', () => {
       query: { shadows: 0 },
       readyTimeoutMs: 60_000,
     });
-    type Moves = Array<{ run?: boolean }>;
+    type Moves = Array<{ run?: boolean; elapsed: number }>;
     type WB = Game3D & {
       handles(): { pieces: { body: number; kind: string; fallen: boolean }[]; controls: { moves: Moves; pull: unknown } };
       swings(): { used: number };
@@ -181,11 +181,15 @@ describe('3D rigid-body games in headless Chromium', () => {
     await pull(await pieceAt('tower'));
     // The swing is under way: the tagline draws the ball back (./scene pullBack) till its run begins.
     expect(await g.page.evaluate(() => (window.game as unknown as WB).handles().controls.pull !== null)).toBe(true);
-    // Stepped in the page (paused) to the run: the first swing is used.
+    // Stepped in the page (paused) until the run has begun: the first swing is used. (The run's moves
+    // are planned on the substep the tagline lets go and begun on the next, which may fall in the next
+    // step, so the run is waited for to have begun, not only to be planned; where the let-go lands
+    // among the substeps follows the drawn tower's place, which the easing camera moves a little.)
     const run = await g.page.evaluate(() => {
       const game = window.game as unknown as WB;
       const moves = () => game.handles().controls.moves;
-      for (let i = 0; i < 900 && moves()[0]?.run !== true; i++) game.step();
+      const begun = () => moves()[0]?.run === true && (moves()[0]?.elapsed ?? 0) > 0;
+      for (let i = 0; i < 900 && !begun(); i++) game.step();
       return { on: moves()[0]?.run === true, used: game.swings().used };
     });
     expect(run).toEqual({ on: true, used: 1 });
