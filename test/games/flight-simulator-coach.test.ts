@@ -6,24 +6,12 @@
  * obeying it never misses (at the tube's edge it did, three rings in a row for a stranger).
  */
 
-import { createPhysicsWorld, setBodyThrust, setControlDeflection, step } from '@bitphysics/physics';
-import { AIRCRAFT, aircraft, aircraftLevelDrag } from '@bitphysics/projects';
 import { describe, expect, it } from 'vitest';
-import {
-  AILERON_SCALE,
-  assist,
-  BANK_KEY_RAMP,
-  CONTROL_AUTHORITY,
-  createAssistState,
-  flightState,
-  heldBank,
-  rampKey,
-  SURFACE_RATE,
-} from '../../games/flight-simulator/assist';
+import { BANK_KEY_RAMP, flightState, heldBank, rampKey } from '../../games/flight-simulator/assist';
 import { courseTipText, markerBearing } from '../../games/flight-simulator/coach';
 import { PASS_RADIUS, predictThroughRing, type Ring, ringWay } from '../../games/flight-simulator/course';
+import { assistedAircraft } from './flight-simulator-flyer';
 
-const DEG = Math.PI / 180;
 /** How long after a tip shows the pilot's keys follow it, s (a player reading and pressing): quick and slow. */
 const REACTIONS = [0.2, 0.35];
 const desk = { touch: false, compact: false, pilotPitch: false };
@@ -34,10 +22,7 @@ const desk = { touch: false, compact: false, pilotPitch: false };
  * the ring's centre the aircraft crossed its plane, m, and whether the tip ever said "let go".
  */
 function obey(ahead: number, side: number, up: number, reaction: number): { offset: number; saidLetGo: boolean } {
-  const world = createPhysicsWorld(aircraft.worldOptions());
-  const h = aircraft.build(world, { seed: 1, altitude: 900 });
-  const C = world.components,
-    e = h.body;
+  const { world, C, e, state, fly } = assistedAircraft();
   const ring: Ring = {
     x: C.Position.x[e]! + ahead,
     y: C.Position.y[e]! + up,
@@ -47,11 +32,6 @@ function obey(ahead: number, side: number, up: number, reaction: number): { offs
     nz: 0,
     status: 'ahead',
   };
-  const state = createAssistState(),
-    surface = { aileron: 0, elevator: 0, rudder: 0 },
-    rate = SURFACE_RATE.assist * world.dt,
-    full = CONTROL_AUTHORITY * DEG,
-    throttle = aircraftLevelDrag(130) / AIRCRAFT.maxThrust;
   const seen: string[] = [];
   const key = { roll: 0, pitch: 0 };
   let pathRate = 0,
@@ -77,16 +57,7 @@ function obey(ahead: number, side: number, up: number, reaction: number): { offs
     const pitch = letGo ? 0 : read.includes('↑') ? 1 : read.includes('↓') ? -1 : 0;
     key.roll = rampKey(key.roll, roll, world.dt, BANK_KEY_RAMP);
     key.pitch = rampKey(key.pitch, pitch, world.dt);
-    const c = assist(s, { roll: key.roll, pitch: key.pitch, yaw: 0 }, state, world.dt);
-    surface.aileron += Math.max(-rate, Math.min(rate, c.aileron - surface.aileron));
-    surface.elevator += Math.max(-rate, Math.min(rate, c.elevator - surface.elevator));
-    surface.rudder += Math.max(-rate, Math.min(rate, c.rudder - surface.rudder));
-    setControlDeflection(world, h.surfaces.tail, -surface.elevator * full);
-    setControlDeflection(world, h.surfaces.leftWing, surface.aileron * full * AILERON_SCALE);
-    setControlDeflection(world, h.surfaces.rightWing, -surface.aileron * full * AILERON_SCALE);
-    setControlDeflection(world, h.surfaces.fin, -surface.rudder * full);
-    setBodyThrust(world, e, [throttle * AIRCRAFT.maxThrust, 0, 0]);
-    step(world);
+    fly(s, key.roll, key.pitch);
     pathRate = (flightState(world, e).path - s.path) / world.dt;
     const gap = ring.x - C.Position.x[e]!;
     if (gap <= 0) {

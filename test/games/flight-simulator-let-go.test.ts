@@ -6,21 +6,10 @@
  * the turn ends on it. scripts/flight-simulator-naive-turn.mjs prints the same for more turns.
  */
 
-import { createPhysicsWorld, setBodyThrust, setControlDeflection, step } from '@bitphysics/physics';
-import { AIRCRAFT, aircraft, aircraftLevelDrag } from '@bitphysics/projects';
 import { describe, expect, it } from 'vitest';
-import {
-  AILERON_SCALE,
-  assist,
-  BANK_KEY_RAMP,
-  CONTROL_AUTHORITY,
-  createAssistState,
-  type FlightState,
-  flightState,
-  rampKey,
-  SURFACE_RATE,
-} from '../../games/flight-simulator/assist';
+import { BANK_KEY_RAMP, type FlightState, flightState, rampKey } from '../../games/flight-simulator/assist';
 import { bearingAfterLetGo, LET_GO_LEAD, LET_GO_PAST, letGoCue, runOnTurn } from '../../games/flight-simulator/let-go';
+import { assistedAircraft } from './flight-simulator-flyer';
 
 const DEG = Math.PI / 180;
 const wrap = (a: number) => Math.atan2(Math.sin(a), Math.cos(a));
@@ -41,16 +30,8 @@ interface Seen {
  * flies 3 s on (the wings are level within 1 s): returns the ring's bearing from the path's heading then, degrees (- past it).
  */
 function turnOnto(target: number, letGo: (seen: Seen) => boolean): number {
-  const world = createPhysicsWorld(aircraft.worldOptions());
-  const h = aircraft.build(world, { seed: 1, altitude: 900 });
-  const C = world.components,
-    e = h.body;
+  const { world, C, e, fly } = assistedAircraft();
   const ring = [C.Position.x[e]! + 5000 * Math.cos(target * DEG), C.Position.z[e]! + 5000 * Math.sin(target * DEG)] as const;
-  const state = createAssistState(),
-    surface = { aileron: 0, elevator: 0, rudder: 0 },
-    rate = SURFACE_RATE.assist * world.dt,
-    full = CONTROL_AUTHORITY * DEG,
-    throttle = aircraftLevelDrag(130) / AIRCRAFT.maxThrust;
   let key = 0,
     released = -1,
     bearing = 0;
@@ -63,16 +44,7 @@ function turnOnto(target: number, letGo: (seen: Seen) => boolean): number {
     if (released < 0 && i > 0 && letGo({ bearing, s, key, dx, dz, track, t: i * world.dt })) released = i;
     if (released >= 0 && i - released >= 180) break;
     key = rampKey(key, released < 0 ? 1 : 0, world.dt, BANK_KEY_RAMP);
-    const c = assist(s, { roll: key, pitch: 0, yaw: 0 }, state, world.dt);
-    surface.aileron += Math.max(-rate, Math.min(rate, c.aileron - surface.aileron));
-    surface.elevator += Math.max(-rate, Math.min(rate, c.elevator - surface.elevator));
-    surface.rudder += Math.max(-rate, Math.min(rate, c.rudder - surface.rudder));
-    setControlDeflection(world, h.surfaces.tail, -surface.elevator * full);
-    setControlDeflection(world, h.surfaces.leftWing, surface.aileron * full * AILERON_SCALE);
-    setControlDeflection(world, h.surfaces.rightWing, -surface.aileron * full * AILERON_SCALE);
-    setControlDeflection(world, h.surfaces.fin, -surface.rudder * full);
-    setBodyThrust(world, e, [throttle * AIRCRAFT.maxThrust, 0, 0]);
-    step(world);
+    fly(s, key, 0);
   }
   expect(released).toBeGreaterThan(0);
   return bearing / DEG;

@@ -8,22 +8,13 @@
  * winnable by holding station).
  */
 
-import { createPhysicsWorld, step } from '@bitphysics/physics';
-import { SUBMARINE, SUBMARINE_NEUTRAL_FILL, submarine } from '@bitphysics/projects';
+import { step } from '@bitphysics/physics';
+import { SUBMARINE } from '@bitphysics/projects';
 import { describe, expect, it } from 'vitest';
 import { BEACON_CATCH } from '../../games/submarine/beacons';
 import { CURRENT_SHOWN, CURRENTS, currentAt, currentMark, currentNote, driftInCurrent } from '../../games/submarine/current';
-import { createHelmState, type HelmInput, NO_INPUT, steer } from '../../games/submarine/helm';
-
-/** A neutral boat hovering at height `y` on a calm sea over open water, at rest, holding that depth. */
-function hovering(y: number) {
-  const world = createPhysicsWorld(submarine.worldOptions());
-  const h = submarine.build(world, { seed: 1, count: 0, fill: SUBMARINE_NEUTRAL_FILL, position: [0, y] });
-  world.components.FluidRegion.surface.fill(0);
-  h.seabed.y.fill(-1000);
-  const helm = { ...createHelmState(SUBMARINE_NEUTRAL_FILL), holdY: y, mode: 'holding' as const };
-  return { world, h, helm, c: world.components, e: h.hull };
-}
+import { type HelmInput, NO_INPUT, steer } from '../../games/submarine/helm';
+import { hovering } from './submarine-hover';
 
 describe('submarine currents', () => {
   it('flow in bands by depth: speed sin(pi d / band + phase), still on level 1 and at the surface', () => {

@@ -6,21 +6,12 @@
  * ruler) and, let go, the boat levels on it: where it ends is what the mark showed at the let-go.
  */
 
-import { createPhysicsWorld, step } from '@bitphysics/physics';
-import { SUBMARINE, SUBMARINE_NEUTRAL_FILL, submarine } from '@bitphysics/projects';
+import { step } from '@bitphysics/physics';
+import { SUBMARINE } from '@bitphysics/projects';
 import { describe, expect, it } from 'vitest';
-import { createHelmState, KEY_HEAVE_SHARE, NO_INPUT, steer } from '../../games/submarine/helm';
+import { KEY_HEAVE_SHARE, NO_INPUT, steer } from '../../games/submarine/helm';
 import { STICK_ORDER_LEAD, STICK_ORDER_SPEED, stickHeaveDirection, stickOrder, stickShare } from '../../games/submarine/stick';
-
-/** A neutral boat hovering at height `y` on a calm sea over open water, holding that depth. */
-function hovering(y: number) {
-  const world = createPhysicsWorld(submarine.worldOptions());
-  const h = submarine.build(world, { seed: 1, count: 0, fill: SUBMARINE_NEUTRAL_FILL, position: [0, y] });
-  world.components.FluidRegion.surface.fill(0);
-  h.seabed.y.fill(-1000);
-  const helm = { ...createHelmState(SUBMARINE_NEUTRAL_FILL), holdY: y, mode: 'holding' as const };
-  return { world, h, helm, c: world.components, e: h.hull };
-}
+import { hovering } from './submarine-hover';
 
 describe('submarine stick order', () => {
   it('moves at STICK_ORDER_SPEED times the share from past the hull, at most STICK_ORDER_LEAD ahead, inside floor and ceiling', () => {
